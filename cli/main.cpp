@@ -1,0 +1,186 @@
+// arealight command line (CONTRACT.md section 4). Thin: parse, configure, call
+// the library, map the outcome to an exit code.
+//
+// Exit codes: 0 success, 1 bad input (malformed case file, unknown variant),
+// 2 usage error, 3 runtime or device failure (write failure, no Vulkan device).
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <thread>
+
+#include "arealight/atomic_file.hpp"
+#include "arealight/case_io.hpp"
+#include "arealight/compiler.hpp"
+#include "arealight/evaluator.hpp"
+#include "arealight/generator.hpp"
+#include "arealight/reference.hpp"
+#include "summary.hpp"
+
+namespace {
+
+enum Exit { kOk = 0, kBadInput = 1, kUsage = 2, kRuntime = 3 };
+
+void print_diagnostic(const arealight::Diagnostic& d) {
+    // Messages already name their file; print them verbatim, notes included.
+    if (d.severity == arealight::Severity::Error) {
+        fmt::print(stderr, "arealight: error: {}\n", d.message);
+    } else {
+        fmt::print(stderr, "arealight: {}: {}\n", arealight::to_string(d.severity), d.message);
+    }
+}
+
+// Reports progress on stderr once a run has taken more than a second.
+class ProgressPrinter {
+  public:
+    explicit ProgressPrinter(std::string what)
+        : what_(std::move(what)), start_(std::chrono::steady_clock::now()) {}
+    void operator()(std::size_t done, std::size_t total) {
+        const auto now = std::chrono::steady_clock::now();
+        const double elapsed = std::chrono::duration<double>(now - start_).count();
+        if (elapsed < 1.0 || (done != total && now - last_ < std::chrono::milliseconds(250)))
+            return;
+        last_ = now;
+        shown_ = true;
+        fmt::print(stderr, "\r{}: {}/{} cases, {:.1f} s", what_, done, total, elapsed);
+        if (done == total) fmt::print(stderr, "\n");
+        std::fflush(stderr);
+    }
+
+  private:
+    std::string what_;
+    std::chrono::steady_clock::time_point start_, last_{};
+    bool shown_ = false;
+};
+
+int run_reference(const std::string& cases_path, const std::string& out_path, double rel_tol,
+                  unsigned threads, bool table) {
+    auto cases = arealight::read_cases(cases_path, print_diagnostic);
+    if (!cases) return kBadInput;
+    arealight::ReferenceOptions opt;
+    opt.rel_tol = rel_tol;
+    opt.threads = threads;
+    ProgressPrinter progress("reference");
+    const auto start = std::chrono::steady_clock::now();
+    const auto results = arealight::reference_all(
+        *cases, opt, [&](std::size_t d, std::size_t t) { progress(d, t); });
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (!arealight::write_results(out_path, results, print_diagnostic)) return kRuntime;
+    if (table) fmt::print("{}", arealight::cli::results_table(results));
+    fmt::print("{}", arealight::cli::results_summary(results, seconds));
+    return kOk;
+}
+
+int run_variants() {
+    for (const auto& v : arealight::enumerate_variants()) {
+        fmt::print("{}\n", arealight::canonical_name(v));
+    }
+    return kOk;
+}
+
+int run_eval(const std::string& cases_path, const std::string& variant_name,
+             const std::string& backend, const std::string& device, const std::string& out_path) {
+    auto variant = arealight::parse_variant(variant_name, print_diagnostic);
+    if (!variant) return kBadInput;
+    auto cases = arealight::read_cases(cases_path, print_diagnostic);
+    if (!cases) return kBadInput;
+    arealight::EvalOptions opt;
+    opt.backend = backend == "cpu" ? arealight::Backend::Cpu : arealight::Backend::Vulkan;
+    opt.device = device;
+    auto evaluator = arealight::Evaluator::create(opt, print_diagnostic);
+    if (!evaluator) return kRuntime;
+    arealight::EvalStats stats;
+    auto results = evaluator->run(*variant, *cases, print_diagnostic, &stats);
+    if (!results) return kRuntime;
+    if (!arealight::write_results(out_path, *results, print_diagnostic)) return kRuntime;
+    fmt::print(stderr, "eval: {} cases on {}, {} not applicable to {}\n", stats.evaluated, backend,
+               stats.skipped, arealight::canonical_name(*variant));
+    return kOk;
+}
+
+int run_generate(const std::string& variant_name, const std::string& glsl_path,
+                 const std::string& spv_path, bool no_opt) {
+    auto variant = arealight::parse_variant(variant_name, print_diagnostic);
+    if (!variant) return kBadInput;
+    const std::string glsl = arealight::generate_source(*variant, arealight::Language::Glsl);
+    // Compile even when only GLSL is asked for: a written shader is a valid shader.
+    auto spirv = arealight::build_spirv(*variant, !no_opt, print_diagnostic);
+    if (!spirv) return kRuntime;
+    if (glsl_path.empty() && spv_path.empty()) fmt::print("{}", glsl);
+    if (!glsl_path.empty() && !arealight::write_file_atomic(glsl_path, glsl, print_diagnostic))
+        return kRuntime;
+    if (!spv_path.empty()) {
+        const std::string bytes(reinterpret_cast<const char*>(spirv->data()),
+                                spirv->size() * sizeof(uint32_t));
+        if (!arealight::write_file_atomic(spv_path, bytes, print_diagnostic)) return kRuntime;
+    }
+    return kOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{
+        "arealight: analytic area-light shading, generated as GLSL/SPIR-V and checked "
+        "against an independent oracle"};
+    app.require_subcommand(1);
+    app.footer("Exit codes: 0 ok, 1 bad input, 2 usage, 3 runtime/device failure.");
+
+    auto* variants = app.add_subcommand("variants", "List every valid variant name, one per line");
+
+    std::string cases_path, out_path, variant, backend = "vulkan", device;
+    auto* eval = app.add_subcommand("eval", "Run one shader variant on every case it applies to");
+    eval->add_option("--cases", cases_path, "arealight-cases/1 file")->required();
+    eval->add_option("--variant", variant,
+                     "variant name, e.g. dist=phong,method=exact,light=polygon")
+        ->required();
+    eval->add_option("--backend", backend, "cpu (the CPU mirror) or vulkan (the SPIR-V)")
+        ->check(CLI::IsMember({"cpu", "vulkan"}))
+        ->capture_default_str();
+    eval->add_option("--device", device, "Vulkan device name substring (default: first device)");
+    eval->add_option("--out", out_path, "arealight-results/1 file to write")->required();
+
+    std::string glsl_path, spv_path;
+    bool no_opt = false;
+    auto* generate = app.add_subcommand(
+        "generate", "Write a variant's GLSL and/or SPIR-V (GLSL on stdout when no file is given)");
+    generate->add_option("--variant", variant, "variant name")->required();
+    generate->add_option("--glsl", glsl_path, "GLSL file to write");
+    generate->add_option("--spv", spv_path, "SPIR-V file to write");
+    generate->add_flag("--no-opt", no_opt, "skip the SPIRV-Tools performance passes");
+
+    double rel_tol = 1e-10;
+    unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+    auto* reference = app.add_subcommand(
+        "reference", "Compute the oracle values (adaptive cubature) of every case");
+    reference->add_option("--cases", cases_path, "arealight-cases/1 file")->required();
+    reference->add_option("--out", out_path, "arealight-results/1 file to write")->required();
+    reference->add_option("--tolerance", rel_tol, "requested relative accuracy")
+        ->check(CLI::Range(1e-14, 1e-2))
+        ->capture_default_str();
+    reference->add_option("--threads", threads, "worker threads")
+        ->check(CLI::Range(1u, 256u))
+        ->capture_default_str();
+    bool table = false;
+    reference->add_flag("--table", table, "print every case's values on stdout");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        app.exit(e);
+        return kUsage;
+    }
+
+    if (variants->parsed()) return run_variants();
+    if (eval->parsed()) return run_eval(cases_path, variant, backend, device, out_path);
+    if (generate->parsed()) return run_generate(variant, glsl_path, spv_path, no_opt);
+    if (reference->parsed()) return run_reference(cases_path, out_path, rel_tol, threads, table);
+    return kUsage;
+}

@@ -1,0 +1,295 @@
+// glslang front end, SPIRV-Tools validation and optimization. Nothing here prints: every message
+// from either library is turned into a Diagnostic for the caller's consumer.
+#include "arealight/compiler.hpp"
+
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+#include <glslang/SPIRV/GlslangToSpv.h>
+
+#include <cctype>
+#include <memory>
+#include <spirv-tools/libspirv.hpp>
+#include <spirv-tools/optimizer.hpp>
+#include <sstream>
+
+namespace arealight {
+namespace {
+
+// Must match the client/target given to glslang (Vulkan 1.1 guarantees SPIR-V 1.3).
+constexpr spv_target_env kTargetEnv = SPV_ENV_VULKAN_1_1;
+constexpr int kDefaultGlslVersion = 450;
+
+// glslang needs InitializeProcess() before the first TShader and FinalizeProcess() once at the
+// end; both are reference counted, so one function-local static owns a single reference.
+class GlslangProcess {
+  public:
+    GlslangProcess() { glslang::InitializeProcess(); }
+    ~GlslangProcess() { glslang::FinalizeProcess(); }
+    GlslangProcess(const GlslangProcess&) = delete;
+    GlslangProcess& operator=(const GlslangProcess&) = delete;
+};
+
+void ensure_glslang_initialized() {
+    static GlslangProcess process;
+}
+
+// Tracks whether an error was reported, so a failure is never silent.
+class Reporter {
+  public:
+    explicit Reporter(const DiagnosticConsumer& consumer) : consumer_(consumer) {}
+
+    void operator()(Diagnostic d) {
+        if (d.severity == Severity::Error) errors_ = true;
+        if (consumer_) consumer_(d);
+    }
+    void error(const std::string& file, const std::string& message) {
+        (*this)(Diagnostic{Severity::Error, file, 0, message});
+    }
+    bool any_error() const { return errors_; }
+
+  private:
+    const DiagnosticConsumer& consumer_;
+    bool errors_ = false;
+};
+
+// Prefixes written by glslang's TInfoSink (Include/InfoSink.h).
+struct Prefix {
+    const char* text;
+    Severity severity;
+};
+constexpr Prefix kPrefixes[] = {
+    {"ERROR: ", Severity::Error},         {"INTERNAL ERROR: ", Severity::Error},
+    {"UNIMPLEMENTED: ", Severity::Error}, {"UNKNOWN ERROR: ", Severity::Error},
+    {"WARNING: ", Severity::Warning},     {"NOTE: ", Severity::Note},
+};
+
+// Splits "file:line: message" (TSourceLoc::getStringNameOrNum, then the line). The first
+// ":<digits>: " is the separator, so a file name may itself contain colons before it.
+bool split_location(const std::string& rest, std::string& file, int& line, std::string& message) {
+    for (std::size_t colon = rest.find(':'); colon != std::string::npos;
+         colon = rest.find(':', colon + 1)) {
+        std::size_t end = colon + 1;
+        while (end < rest.size() && std::isdigit(static_cast<unsigned char>(rest[end]))) ++end;
+        if (end == colon + 1 || end >= rest.size() || rest[end] != ':' || colon == 0) continue;
+        file = rest.substr(0, colon);
+        line = std::stoi(rest.substr(colon + 1, end - colon - 1));
+        message = rest.substr(end + 1);
+        if (!message.empty() && message.front() == ' ') message.erase(0, 1);
+        while (!message.empty() && message.back() == ' ') message.pop_back();
+        return true;
+    }
+    return false;
+}
+
+// One Diagnostic per prefixed line of a glslang info log; unprefixed lines continue the previous
+// message. glslang's "N compilation errors.  No code generated." summary repeats what was said.
+void report_info_log(const char* log, const std::string& source_name, Reporter& report) {
+    std::istringstream lines(log ? log : "");
+    std::string text;
+    // A plain value plus flag: GCC 12 warns falsely (-Wmaybe-uninitialized) on optional here.
+    Diagnostic pending;
+    bool has_pending = false;
+    auto flush = [&] {
+        if (has_pending) report(std::move(pending));
+        has_pending = false;
+    };
+    while (std::getline(lines, text)) {
+        if (!text.empty() && text.back() == '\r') text.pop_back();
+        if (text.find_first_not_of(" \t") == std::string::npos) continue;
+        const Prefix* prefix = nullptr;
+        for (const Prefix& p : kPrefixes) {
+            if (text.rfind(p.text, 0) == 0) {
+                prefix = &p;
+                break;
+            }
+        }
+        if (!prefix) {
+            if (has_pending) {
+                pending.message += "\n" + text;
+            } else {
+                pending = Diagnostic{Severity::Note, source_name, 0, text};
+                has_pending = true;
+            }
+            continue;
+        }
+        flush();
+        const std::string rest = text.substr(std::char_traits<char>::length(prefix->text));
+        Diagnostic d{prefix->severity, source_name, 0, rest};
+        if (!split_location(rest, d.file, d.line, d.message)) {
+            if (rest.find("No code generated.") != std::string::npos) continue;
+        }
+        pending = std::move(d);
+        has_pending = true;
+    }
+    flush();
+}
+
+Severity severity_of(spv_message_level_t level) {
+    switch (level) {
+        case SPV_MSG_FATAL:
+        case SPV_MSG_INTERNAL_ERROR:
+        case SPV_MSG_ERROR:
+            return Severity::Error;
+        case SPV_MSG_WARNING:
+            return Severity::Warning;
+        case SPV_MSG_INFO:
+        case SPV_MSG_DEBUG:
+            return Severity::Note;
+    }
+    return Severity::Error;
+}
+
+// SPIRV-Tools drops messages unless a consumer is installed (libspirv.hpp SetMessageConsumer).
+spvtools::MessageConsumer spirv_tools_consumer(const std::string& tool,
+                                               const std::string& source_name, Reporter& report) {
+    return [&report, tool, source_name](spv_message_level_t level, const char*,
+                                        const spv_position_t& position, const char* message) {
+        std::string text = tool + ": " + (message ? message : "");
+        if (position.index != 0) text += " (word " + std::to_string(position.index) + ")";
+        report(Diagnostic{severity_of(level), source_name, 0, std::move(text)});
+    };
+}
+
+// glslang 12 ignores TShader::setEntryPoint for GLSL and rejects a source entry other than "main"
+// (ParseHelper.cpp), so the name is replaced in OpEntryPoint after translation.
+void rename_entry_point(std::vector<uint32_t>& spirv, const std::string& name) {
+    constexpr uint32_t kOpEntryPoint = 15;
+    constexpr std::size_t kHeaderWords = 5;
+    for (std::size_t at = kHeaderWords; at < spirv.size();) {
+        const std::size_t words = spirv[at] >> 16;
+        if (words == 0 || at + words > spirv.size()) return;
+        if ((spirv[at] & 0xffffu) != kOpEntryPoint) {
+            at += words;
+            continue;
+        }
+        // Operands: execution model, function id, nul-terminated name packed into words, then ids.
+        std::size_t name_end = at + 3;
+        while (name_end < at + words && (spirv[name_end] >> 24) != 0) ++name_end;
+        ++name_end;
+        std::vector<uint32_t> packed((name.size() + 4) / 4, 0u);
+        for (std::size_t i = 0; i < name.size(); ++i) {
+            packed[i / 4] |= static_cast<uint32_t>(static_cast<unsigned char>(name[i]))
+                             << (8 * (i % 4));
+        }
+        std::vector<uint32_t> rebuilt(spirv.begin() + at, spirv.begin() + at + 3);
+        rebuilt.insert(rebuilt.end(), packed.begin(), packed.end());
+        rebuilt.insert(rebuilt.end(), spirv.begin() + name_end, spirv.begin() + at + words);
+        rebuilt[0] = static_cast<uint32_t>(rebuilt.size() << 16) | kOpEntryPoint;
+        spirv.erase(spirv.begin() + at, spirv.begin() + at + words);
+        spirv.insert(spirv.begin() + at, rebuilt.begin(), rebuilt.end());
+        at += rebuilt.size();
+    }
+}
+
+bool validate(const std::vector<uint32_t>& spirv, const std::string& stage,
+              const std::string& source_name, Reporter& report) {
+    spvtools::SpirvTools tools(kTargetEnv);
+    tools.SetMessageConsumer(spirv_tools_consumer("spirv-val", source_name, report));
+    if (tools.Validate(spirv)) return true;
+    report.error(source_name, "SPIR-V validation failed " + stage);
+    return false;
+}
+
+// glslang front end: parse, link and translate. The program refers to the shader's intermediate
+// tree, so it is declared after the shader and therefore destroyed first (ShaderLang.h).
+std::optional<std::vector<uint32_t>> glsl_to_spirv(const std::string& source,
+                                                   const std::string& source_name,
+                                                   const CompileOptions& options,
+                                                   Reporter& report) {
+    ensure_glslang_initialized();
+    glslang::TShader shader(EShLangCompute);
+    const char* text = source.c_str();
+    const int length = static_cast<int>(source.size());
+    const char* name = source_name.c_str();
+    shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
+    shader.setEnvInput(glslang::EShSourceGlsl, EShLangCompute, glslang::EShClientVulkan, 100);
+    shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1);
+    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
+    const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
+
+    const bool parsed = shader.parse(GetDefaultResources(), kDefaultGlslVersion, false, messages);
+    report_info_log(shader.getInfoLog(), source_name, report);
+    // glslang can log an ERROR and still return true; an error always means failure here.
+    if (!parsed || report.any_error()) {
+        if (!report.any_error()) report.error(source_name, "glslang: compilation failed");
+        return std::nullopt;
+    }
+
+    glslang::TProgram program;
+    program.addShader(&shader);
+    const bool linked = program.link(messages);
+    report_info_log(program.getInfoLog(), source_name, report);
+    if (!linked || report.any_error()) {
+        if (!report.any_error()) report.error(source_name, "glslang: linking failed");
+        return std::nullopt;
+    }
+
+    std::vector<uint32_t> spirv;
+    spv::SpvBuildLogger logger;
+    glslang::SpvOptions spv_options;
+    spv_options.disableOptimizer = true;  // SPIRV-Tools does this below, with validation
+    glslang::GlslangToSpv(*program.getIntermediate(EShLangCompute), spirv, &logger, &spv_options);
+    const std::string spv_messages = logger.getAllMessages();
+    if (!spv_messages.empty()) {
+        report(Diagnostic{Severity::Warning, source_name, 0, "glslang SPIR-V: " + spv_messages});
+    }
+    if (spirv.empty()) {
+        report.error(source_name, "glslang produced no SPIR-V");
+        return std::nullopt;
+    }
+    if (options.entry != "main") rename_entry_point(spirv, options.entry);
+    return spirv;
+}
+
+}  // namespace
+
+std::optional<std::vector<uint32_t>> compile_glsl(const std::string& source,
+                                                  const std::string& source_name,
+                                                  const CompileOptions& options,
+                                                  const DiagnosticConsumer& diag) {
+    Reporter report(diag);
+    if (options.entry.empty()) {
+        report.error(source_name, "CompileOptions::entry is empty");
+        return std::nullopt;
+    }
+    std::optional<std::vector<uint32_t>> spirv =
+        glsl_to_spirv(source, source_name, options, report);
+    if (!spirv) return std::nullopt;
+    if (!validate(*spirv, "after glslang", source_name, report)) return std::nullopt;
+    if (!options.optimize) return spirv;
+
+    spvtools::Optimizer optimizer(kTargetEnv);
+    optimizer.SetMessageConsumer(spirv_tools_consumer("spirv-opt", source_name, report));
+    optimizer.RegisterPerformancePasses();
+    std::vector<uint32_t> optimized;
+    if (!optimizer.Run(spirv->data(), spirv->size(), &optimized)) {
+        report.error(source_name, "spirv-opt failed");
+        return std::nullopt;
+    }
+    if (!validate(optimized, "after spirv-opt", source_name, report)) return std::nullopt;
+    return optimized;
+}
+
+std::size_t spirv_instruction_count(const std::vector<uint32_t>& spirv) {
+    constexpr std::size_t kHeaderWords = 5;
+    std::size_t count = 0;
+    // High 16 bits of an instruction's first word hold its total word count (SPIR-V spec 2.3).
+    for (std::size_t at = kHeaderWords; at < spirv.size();) {
+        const std::size_t words = spirv[at] >> 16;
+        if (words == 0 || at + words > spirv.size()) break;
+        ++count;
+        at += words;
+    }
+    return count;
+}
+
+std::string disassemble(const std::vector<uint32_t>& spirv) {
+    spvtools::SpirvTools tools(kTargetEnv);
+    std::string text;
+    const uint32_t options =
+        SPV_BINARY_TO_TEXT_OPTION_FRIENDLY_NAMES | SPV_BINARY_TO_TEXT_OPTION_INDENT;
+    if (!tools.Disassemble(spirv, &text, options)) return {};
+    return text;
+}
+
+}  // namespace arealight

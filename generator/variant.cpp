@@ -1,0 +1,238 @@
+#include "arealight/variant.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
+
+namespace arealight {
+namespace {
+
+const Distribution kDists[] = {Distribution::Phong, Distribution::Blinn, Distribution::Beckmann,
+                               Distribution::Ggx};
+const Method kMethods[] = {Method::Exact, Method::Point};
+const LightType kLights[] = {LightType::Polygon, LightType::Disk, LightType::Sphere,
+                             LightType::Ellipsoid};
+const Sided kSided[] = {Sided::Any, Sided::One, Sided::Two};
+const int kNodes[] = {8, 12, 16, 24};
+
+// The (dist, method, light) families with an implementation. Adding a method is
+// a template plus a row here.
+struct Family {
+    Distribution dist;
+    Method method;
+    LightType light;
+};
+const Family kFamilies[] = {
+    {Distribution::Phong, Method::Exact, LightType::Polygon},
+    {Distribution::Phong, Method::Point, LightType::Polygon},
+};
+
+bool has_family(const Variant& v) {
+    return std::any_of(std::begin(kFamilies), std::end(kFamilies), [&](const Family& f) {
+        return f.dist == v.dist && f.method == v.method && f.light == v.light;
+    });
+}
+bool uses_verts(const Variant& v) {
+    return v.light == LightType::Polygon;
+}
+bool uses_nodes(const Variant& v) {
+    return v.method == Method::Exact;
+}
+
+template <class T, std::size_t N>
+std::string choices(const T (&values)[N]) {
+    std::string s;
+    for (const auto& x : values) s += (s.empty() ? "" : ", ") + std::string(to_string(x));
+    return s;
+}
+
+template <class T, std::size_t N>
+std::optional<T> lookup(const T (&values)[N], const std::string& name) {
+    for (const auto& x : values)
+        if (name == to_string(x)) return x;
+    return std::nullopt;
+}
+
+std::optional<int> parse_int(const std::string& s) {
+    if (s.empty() || s.size() > 3 || !std::all_of(s.begin(), s.end(), ::isdigit))
+        return std::nullopt;
+    return std::stoi(s);
+}
+
+// Splits "a=b,c=d" into ordered pairs; nullopt (with a message) on bad syntax.
+std::optional<std::vector<std::pair<std::string, std::string>>> split(const std::string& name,
+                                                                      std::string& why) {
+    std::vector<std::pair<std::string, std::string>> out;
+    if (name.empty()) return out;
+    std::size_t start = 0;
+    while (start <= name.size()) {
+        const std::size_t comma = std::min(name.find(',', start), name.size());
+        const std::string item = name.substr(start, comma - start);
+        const std::size_t eq = item.find('=');
+        if (eq == std::string::npos || eq == 0 || eq + 1 == item.size() ||
+            item.find_first_of(" \t=", eq + 1) != std::string::npos ||
+            item.find_first_of(" \t") != std::string::npos) {
+            why = fmt::format("'{}' is not key=value", item);
+            return std::nullopt;
+        }
+        out.emplace_back(item.substr(0, eq), item.substr(eq + 1));
+        start = comma + 1;
+    }
+    return out;
+}
+
+}  // namespace
+
+const char* to_string(Method m) {
+    return m == Method::Exact ? "exact" : "point";
+}
+const char* to_string(Sided s) {
+    switch (s) {
+        case Sided::Any:
+            return "any";
+        case Sided::One:
+            return "one";
+        case Sided::Two:
+            return "two";
+    }
+    return "any";
+}
+
+std::optional<Variant> parse_variant(const std::string& name, const DiagnosticConsumer& diag) {
+    auto fail = [&](const std::string& what) -> std::optional<Variant> {
+        if (diag) diag({Severity::Error, "", 0, fmt::format("variant '{}': {}", name, what)});
+        return std::nullopt;
+    };
+    std::string why;
+    auto pairs = split(name, why);
+    if (!pairs) return fail(why);
+    Variant v;
+    std::map<std::string, std::string> seen;
+    for (const auto& [key, value] : *pairs) {
+        if (!seen.emplace(key, value).second) return fail(fmt::format("key '{}' given twice", key));
+        auto bad = [&](const std::string& allowed) {
+            return fail(
+                fmt::format("key '{}': unknown value '{}' (expected {})", key, value, allowed));
+        };
+        if (key == "dist") {
+            auto d = lookup(kDists, value);
+            if (!d) return bad(choices(kDists));
+            v.dist = *d;
+        } else if (key == "method") {
+            auto m = lookup(kMethods, value);
+            if (!m) return bad(choices(kMethods));
+            v.method = *m;
+        } else if (key == "light") {
+            auto l = lookup(kLights, value);
+            if (!l) return bad(choices(kLights));
+            v.light = *l;
+        } else if (key == "sided") {
+            auto s = lookup(kSided, value);
+            if (!s) return bad(choices(kSided));
+            v.sided = *s;
+        } else if (key == "verts") {
+            auto n = parse_int(value);
+            if (!n || *n < 3 || *n > 8)
+                return fail(fmt::format("key 'verts': value '{}' out of range 3..8", value));
+            v.verts = *n;
+        } else if (key == "nodes") {
+            auto n = parse_int(value);
+            if (!n || std::find(std::begin(kNodes), std::end(kNodes), *n) == std::end(kNodes))
+                return fail(
+                    fmt::format("key 'nodes': value '{}' is not one of 8, 12, 16, 24", value));
+            v.nodes = *n;
+        } else {
+            return fail(fmt::format(
+                "unknown key '{}' (keys: dist, method, light, sided, verts, nodes)", key));
+        }
+    }
+    for (const char* required : {"dist", "method", "light"}) {
+        if (!seen.count(required)) return fail(fmt::format("key '{}' is required", required));
+    }
+    if (seen.count("verts") && !uses_verts(v))
+        return fail("key 'verts' applies to light=polygon only");
+    if (seen.count("nodes") && !uses_nodes(v))
+        return fail("key 'nodes' applies to method=exact only");
+    if (!has_family(v)) {
+        return fail(fmt::format("no variant for dist={},method={},light={} yet", to_string(v.dist),
+                                to_string(v.method), to_string(v.light)));
+    }
+    return v;
+}
+
+std::string canonical_name(const Variant& v) {
+    const Variant d;
+    std::string s = fmt::format("dist={},method={},light={}", to_string(v.dist),
+                                to_string(v.method), to_string(v.light));
+    if (v.sided != d.sided) s += fmt::format(",sided={}", to_string(v.sided));
+    if (uses_verts(v) && v.verts != d.verts) s += fmt::format(",verts={}", v.verts);
+    if (uses_nodes(v) && v.nodes != d.nodes) s += fmt::format(",nodes={}", v.nodes);
+    return s;
+}
+
+std::vector<Variant> enumerate_variants() {
+    std::vector<Variant> out;
+    for (const auto& f : kFamilies) {
+        Variant base;
+        base.dist = f.dist;
+        base.method = f.method;
+        base.light = f.light;
+        for (Sided s : kSided) {
+            for (int verts = 3; verts <= 8; ++verts) {
+                if (!uses_verts(base) && verts != 3) continue;
+                for (int nodes : kNodes) {
+                    if (!uses_nodes(base) && nodes != kNodes[0]) continue;
+                    Variant v = base;
+                    v.sided = s;
+                    if (uses_verts(v)) v.verts = verts;
+                    if (uses_nodes(v)) v.nodes = nodes;
+                    out.push_back(v);
+                }
+            }
+        }
+    }
+    return out;
+}
+
+std::vector<std::pair<std::string, std::string>> variant_defines(const Variant& v) {
+    std::vector<std::pair<std::string, std::string>> d;
+    auto upper = [](std::string s) {
+        for (auto& ch : s) ch = static_cast<char>(::toupper(ch));
+        return s;
+    };
+    d.emplace_back("AL_DIST_" + upper(to_string(v.dist)), "1");
+    d.emplace_back("AL_METHOD_" + upper(to_string(v.method)), "1");
+    d.emplace_back("AL_LIGHT_" + upper(to_string(v.light)), "1");
+    d.emplace_back("AL_SIDED", v.sided == Sided::Any ? "0" : v.sided == Sided::One ? "1" : "2");
+    if (uses_verts(v)) d.emplace_back("AL_MAX_VERTS", std::to_string(v.verts));
+    if (uses_nodes(v)) d.emplace_back("AL_NODES", std::to_string(v.nodes));
+    return d;
+}
+
+bool variant_matches(const Variant& v, const std::string& pattern) {
+    std::string why;
+    auto pairs = split(pattern, why);
+    if (!pairs) return false;
+    for (const auto& [key, value] : *pairs) {
+        std::string actual;
+        if (key == "dist")
+            actual = to_string(v.dist);
+        else if (key == "method")
+            actual = to_string(v.method);
+        else if (key == "light")
+            actual = to_string(v.light);
+        else if (key == "sided")
+            actual = to_string(v.sided);
+        else if (key == "verts")
+            actual = std::to_string(v.verts);
+        else if (key == "nodes")
+            actual = std::to_string(v.nodes);
+        else
+            return false;
+        if (actual != value) return false;
+    }
+    return true;
+}
+
+}  // namespace arealight

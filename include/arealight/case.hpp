@@ -1,0 +1,46 @@
+// The shading problem of CONTRACT.md section 1, in world space and double precision.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace arealight {
+
+using Vec3 = std::array<double, 3>;
+
+enum class LightType { Polygon, Disk, Sphere, Ellipsoid };
+enum class Distribution { Phong, Blinn, Beckmann, Ggx };
+
+struct Light {
+    LightType type = LightType::Polygon;
+    std::vector<Vec3> vertices;  // polygon: 3..8 coplanar, convex, in order
+    Vec3 center{};               // disk, sphere, ellipsoid
+    Vec3 u{}, v{};               // disk: orthogonal semi-axes
+    double radius = 0.0;         // sphere
+    std::array<Vec3, 3> axes{};  // ellipsoid: orthogonal semi-axes
+    bool two_sided = false;      // polygon, disk
+};
+
+struct Material {
+    Distribution distribution = Distribution::Phong;
+    double exponent = 0.0;  // phong, blinn
+    double alpha = 0.0;     // beckmann, ggx
+};
+
+struct Case {
+    std::string id;
+    Vec3 p{}, n{}, v{};  // n and v as read (not normalized)
+    Light light;
+    Material material;
+};
+
+struct CaseSet {
+    std::vector<Case> cases;
+};
+
+const char* to_string(LightType t);
+const char* to_string(Distribution d);
+bool is_microfacet(Distribution d);
+
+}  // namespace arealight

@@ -1,0 +1,72 @@
+// Runs one variant over a case set on a backend: the CPU mirror or the generated
+// SPIR-V on a Vulkan device. Host-side normalization follows CONTRACT.md 1.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "arealight/case.hpp"
+#include "arealight/diagnostics.hpp"
+#include "arealight/results.hpp"
+#include "arealight/variant.hpp"
+
+namespace arealight {
+
+enum class Backend { Cpu, Vulkan };
+const char* to_string(Backend b);
+
+// Whether the variant computes this case: same distribution and light type, a
+// polygon no larger than `verts`, and sidedness it supports.
+bool case_applies(const Variant& v, const Case& c);
+
+// Cases in the AlCase layout of templates/common.glsl (48 floats each): p moved to
+// the origin, lengths divided by the distance to the light's centre, n and v unit,
+// polygon vertices as offsets from the centre.
+std::vector<float> pack_cases(const std::vector<const Case*>& cases);
+constexpr std::size_t kFloatsPerCase = 48;
+constexpr std::size_t kFloatsPerResult = 4;
+
+struct EvalOptions {
+    Backend backend = Backend::Vulkan;
+    std::string device;    // Vulkan device name substring; empty = first
+    bool optimize = true;  // SPIRV-Tools performance passes
+};
+
+struct EvalStats {
+    std::size_t evaluated = 0, skipped = 0;
+    double seconds = 0.0;  // backend time: mirror loop, or Vulkan submit + wait
+};
+
+class Evaluator {
+  public:
+    // nullptr with a diagnostic when the backend cannot start (no Vulkan device).
+    static std::unique_ptr<Evaluator> create(const EvalOptions& opt,
+                                             const DiagnosticConsumer& diag);
+    ~Evaluator();
+
+    // Results for the applicable cases, in file order; nullopt on failure.
+    std::optional<ResultSet> run(const Variant& v, const CaseSet& cases,
+                                 const DiagnosticConsumer& diag, EvalStats* stats = nullptr);
+    // Raw 4-float results for already-packed cases (benchmarks reuse one packing).
+    bool run_packed(const Variant& v, const std::vector<float>& packed, std::size_t count,
+                    std::vector<float>& results, const DiagnosticConsumer& diag,
+                    double* seconds = nullptr);
+
+  private:
+    struct Impl;
+    explicit Evaluator(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> impl_;
+};
+
+// GLSL -> validated (optimized) SPIR-V for a variant; compiler messages are
+// prefixed with the variant's name.
+std::optional<std::vector<uint32_t>> build_spirv(const Variant& v, bool optimize,
+                                                 const DiagnosticConsumer& diag);
+// Same, for GLSL text already stitched for `v` (tests inject broken templates).
+std::optional<std::vector<uint32_t>> build_spirv(const Variant& v, const std::string& glsl,
+                                                 bool optimize, const DiagnosticConsumer& diag);
+
+}  // namespace arealight

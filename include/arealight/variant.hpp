@@ -1,0 +1,56 @@
+// The variant key as a value type: named fields with defaults, a canonical
+// printed form, validity rules, and enumeration of every valid combination
+// (ROADMAP.md "The variant space").
+#pragma once
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "arealight/case.hpp"
+#include "arealight/diagnostics.hpp"
+
+namespace arealight {
+
+enum class Method { Exact, Point };
+// Any honours each case's two_sided flag at run time; One and Two compile it in.
+enum class Sided { Any, One, Two };
+
+struct Variant {
+    Distribution dist = Distribution::Phong;
+    Method method = Method::Exact;
+    LightType light = LightType::Polygon;
+    Sided sided = Sided::Any;
+    int verts = 8;   // polygon: largest polygon compiled in, 3..8
+    int nodes = 16;  // method=exact: Gauss-Legendre nodes per edge, 8/12/16/24
+
+    bool operator==(const Variant& o) const {
+        return dist == o.dist && method == o.method && light == o.light && sided == o.sided &&
+               verts == o.verts && nodes == o.nodes;
+    }
+    bool operator!=(const Variant& o) const { return !(*this == o); }
+};
+
+const char* to_string(Method m);
+const char* to_string(Sided s);
+
+// Parses "key=value,..."; dist, method and light are required, every other key
+// has a default. Errors name the key (unknown, bad value, duplicate, missing,
+// not applicable) and the combination when it has no implementation.
+std::optional<Variant> parse_variant(const std::string& name, const DiagnosticConsumer& diag);
+
+// dist, method, light, then the keys that apply and differ from their default.
+std::string canonical_name(const Variant& v);
+
+// Every valid variant, in a fixed order, without duplicates.
+std::vector<Variant> enumerate_variants();
+
+// Preprocessor switches the templates see; a boolean feature only when on.
+std::vector<std::pair<std::string, std::string>> variant_defines(const Variant& v);
+
+// True when every key=value of `pattern` (a partial name; empty matches all)
+// equals the variant's effective value. An invalid pattern matches nothing.
+bool variant_matches(const Variant& v, const std::string& pattern);
+
+}  // namespace arealight

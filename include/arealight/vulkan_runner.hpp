@@ -1,0 +1,52 @@
+// Headless Vulkan compute runner: one SPIR-V compute shader over `count` items, results as floats.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "arealight/diagnostics.hpp"
+
+namespace arealight {
+
+// Shader contract for run():
+//   layout(local_size_x = 64) in;
+//   layout(std430, set = 0, binding = 0) readonly buffer In  { ... };  // the input bytes
+//   layout(std430, set = 0, binding = 1) writeonly buffer Out { float out[]; };
+//   layout(push_constant) uniform Push { uint count; uint base; };     // offsets 0 and 4
+//   entry point "main"; item i = base + gl_GlobalInvocationID.x, skipped when i >= count.
+// Large inputs are split into several dispatches that differ only in `base`.
+class VulkanRunner {
+  public:
+    static constexpr uint32_t kLocalSizeX = 64;
+
+    // Picks the first Vulkan 1.1 device with a compute queue whose name contains
+    // `device_name_substring` (empty: the first such device). Returns nullptr, with a diagnostic,
+    // when there is no instance or device, or when no device name matches.
+    static std::unique_ptr<VulkanRunner> create(const std::string& device_name_substring,
+                                                const DiagnosticConsumer& diag);
+
+    ~VulkanRunner();
+    VulkanRunner(const VulkanRunner&) = delete;
+    VulkanRunner& operator=(const VulkanRunner&) = delete;
+
+    std::string device_name() const;
+
+    // Runs `spirv` on `count` items and stores count * output_floats_per_item floats in `output`.
+    // Pipelines are cached per SPIR-V content, so repeated runs of one shader do not recompile.
+    // `seconds`, when given, receives the wall time of queue submit + fence wait only. On failure
+    // returns false with a diagnostic naming the Vulkan call and its VkResult; `output` is then
+    // untouched. Not thread-safe: use one runner per thread.
+    bool run(const std::vector<uint32_t>& spirv, const void* input, std::size_t input_bytes,
+             std::size_t count, std::vector<float>& output, std::size_t output_floats_per_item,
+             const DiagnosticConsumer& diag, double* seconds = nullptr);
+
+  private:
+    struct Impl;
+    explicit VulkanRunner(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace arealight

@@ -1,0 +1,174 @@
+#include "arealight/evaluator.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <map>
+
+#include "arealight/compiler.hpp"
+#include "arealight/cpu_mirror.hpp"
+#include "arealight/generator.hpp"
+#include "arealight/vulkan_runner.hpp"
+
+namespace arealight {
+namespace {
+
+Vec3 sub(const Vec3& a, const Vec3& b) {
+    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+double norm(const Vec3& a) {
+    return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+}
+
+Vec3 light_centre(const Light& L) {
+    if (L.type != LightType::Polygon) return L.center;
+    Vec3 c{};
+    for (const auto& x : L.vertices)
+        for (int k = 0; k < 3; ++k) c[k] += x[k] / L.vertices.size();
+    return c;
+}
+
+}  // namespace
+
+const char* to_string(Backend b) {
+    return b == Backend::Cpu ? "cpu" : "vulkan";
+}
+
+bool case_applies(const Variant& v, const Case& c) {
+    if (c.material.distribution != v.dist || c.light.type != v.light) return false;
+    if (v.light == LightType::Polygon && static_cast<int>(c.light.vertices.size()) > v.verts)
+        return false;
+    if (v.sided == Sided::One && c.light.two_sided) return false;
+    if (v.sided == Sided::Two && !c.light.two_sided) return false;
+    return true;
+}
+
+std::vector<float> pack_cases(const std::vector<const Case*>& cases) {
+    std::vector<float> out(cases.size() * kFloatsPerCase, 0.0f);
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+        const Case& c = *cases[i];
+        float* o = &out[i * kFloatsPerCase];
+        const double nl = norm(c.n), vl = norm(c.v);
+        for (int k = 0; k < 3; ++k) {
+            o[k] = static_cast<float>(c.n[k] / nl);
+            o[4 + k] = static_cast<float>(c.v[k] / vl);
+        }
+        const Material& m = c.material;
+        const bool exponent =
+            m.distribution == Distribution::Phong || m.distribution == Distribution::Blinn;
+        o[8] = static_cast<float>(exponent ? m.exponent : m.alpha);
+        o[9] = c.light.two_sided ? 1.0f : 0.0f;
+        o[10] = static_cast<float>(c.light.vertices.size());
+        // Directions and solid angles are scale-invariant about p: scaling by the
+        // light's distance keeps fp32 far from overflow and underflow. Offsets from
+        // the centre are formed in double so they keep their relative precision.
+        const Vec3 centre = light_centre(c.light);
+        double dist = norm(sub(centre, c.p));
+        if (!(dist > 0.0) || !std::isfinite(dist)) dist = 1.0;
+        const Vec3 rel = sub(centre, c.p);
+        for (int j = 0; j < 3; ++j) o[12 + j] = static_cast<float>(rel[j] / dist);
+        for (std::size_t k = 0; k < c.light.vertices.size() && k < 8; ++k) {
+            const Vec3 d = sub(c.light.vertices[k], centre);
+            for (int j = 0; j < 3; ++j) o[16 + 4 * k + j] = static_cast<float>(d[j] / dist);
+        }
+    }
+    return out;
+}
+
+std::optional<std::vector<uint32_t>> build_spirv(const Variant& v, bool optimize,
+                                                 const DiagnosticConsumer& diag) {
+    return build_spirv(v, generate_source(v, Language::Glsl), optimize, diag);
+}
+
+std::optional<std::vector<uint32_t>> build_spirv(const Variant& v, const std::string& glsl,
+                                                 bool optimize, const DiagnosticConsumer& diag) {
+    const std::string name = canonical_name(v);
+    auto prefixed = [&](const Diagnostic& d) {
+        if (!diag) return;
+        Diagnostic p = d;
+        p.message = "variant " + name + ": " + d.message;
+        diag(p);
+    };
+    CompileOptions opt;
+    opt.optimize = optimize;
+    return compile_glsl(glsl, name + ".comp", opt, prefixed);
+}
+
+struct Evaluator::Impl {
+    EvalOptions opt;
+    std::unique_ptr<VulkanRunner> runner;
+    std::map<std::string, std::vector<uint32_t>> spirv;  // by canonical name
+};
+
+Evaluator::Evaluator(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+Evaluator::~Evaluator() = default;
+
+std::unique_ptr<Evaluator> Evaluator::create(const EvalOptions& opt,
+                                             const DiagnosticConsumer& diag) {
+    auto impl = std::make_unique<Impl>();
+    impl->opt = opt;
+    if (opt.backend == Backend::Vulkan) {
+        impl->runner = VulkanRunner::create(opt.device, diag);
+        if (!impl->runner) return nullptr;
+    }
+    return std::unique_ptr<Evaluator>(new Evaluator(std::move(impl)));
+}
+
+bool Evaluator::run_packed(const Variant& v, const std::vector<float>& packed, std::size_t count,
+                           std::vector<float>& results, const DiagnosticConsumer& diag,
+                           double* seconds) {
+    const std::string name = canonical_name(v);
+    if (impl_->opt.backend == Backend::Cpu) {
+        const MirrorFn fn = find_mirror(name);
+        if (!fn) {
+            if (diag) diag({Severity::Error, "", 0, "variant " + name + " has no CPU mirror"});
+            return false;
+        }
+        std::vector<float> out(count * kFloatsPerResult);
+        const auto t0 = std::chrono::steady_clock::now();
+        fn(packed.data(), out.data(), count);
+        if (seconds)
+            *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        results.swap(out);
+        return true;
+    }
+    auto it = impl_->spirv.find(name);
+    if (it == impl_->spirv.end()) {
+        auto words = build_spirv(v, impl_->opt.optimize, diag);
+        if (!words) return false;
+        it = impl_->spirv.emplace(name, std::move(*words)).first;
+    }
+    return impl_->runner->run(it->second, packed.data(), packed.size() * sizeof(float), count,
+                              results, kFloatsPerResult, diag, seconds);
+}
+
+std::optional<ResultSet> Evaluator::run(const Variant& v, const CaseSet& cases,
+                                        const DiagnosticConsumer& diag, EvalStats* stats) {
+    std::vector<const Case*> todo;
+    for (const auto& c : cases.cases)
+        if (case_applies(v, c)) todo.push_back(&c);
+    const auto packed = pack_cases(todo);
+    std::vector<float> raw;
+    double seconds = 0.0;
+    if (!run_packed(v, packed, todo.size(), raw, diag, &seconds)) return std::nullopt;
+    ResultSet out;
+    out.variant = canonical_name(v);
+    out.backend = to_string(impl_->opt.backend);
+    const bool phong = v.dist == Distribution::Phong;
+    for (std::size_t i = 0; i < todo.size(); ++i) {
+        CaseResult r;
+        r.id = todo[i]->id;
+        const float* x = &raw[i * kFloatsPerResult];
+        r.diffuse = x[0];
+        r.specular = x[1];
+        if (v.method != Method::Point) (phong ? r.moment : r.ndf) = x[2];
+        out.results.push_back(std::move(r));
+    }
+    if (stats) {
+        stats->evaluated = todo.size();
+        stats->skipped = cases.cases.size() - todo.size();
+        stats->seconds = seconds;
+    }
+    return out;
+}
+
+}  // namespace arealight

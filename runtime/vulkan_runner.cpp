@@ -1,0 +1,641 @@
+// Headless compute on Vulkan 1.1 (lavapipe in CI). Every VkResult is checked and every handle is
+// owned by an RAII wrapper, so an early return releases exactly what was created.
+#include "arealight/vulkan_runner.hpp"
+
+#include <vulkan/vulkan.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+#include <unordered_map>
+#include <utility>
+
+namespace arealight {
+namespace {
+
+constexpr uint64_t kFenceTimeoutNs = 60ull * 1000 * 1000 * 1000;
+constexpr uint32_t kSpirvMagic = 0x07230203;
+// Push constant block of the shader contract: uint count (offset 0), uint base (offset 4).
+struct PushConstants {
+    uint32_t count;
+    uint32_t base;
+};
+
+const char* vk_result_name(VkResult r) {
+    switch (r) {
+#define AREALIGHT_VK_RESULT(name) \
+    case name:                    \
+        return #name;
+        AREALIGHT_VK_RESULT(VK_SUCCESS)
+        AREALIGHT_VK_RESULT(VK_NOT_READY)
+        AREALIGHT_VK_RESULT(VK_TIMEOUT)
+        AREALIGHT_VK_RESULT(VK_EVENT_SET)
+        AREALIGHT_VK_RESULT(VK_EVENT_RESET)
+        AREALIGHT_VK_RESULT(VK_INCOMPLETE)
+        AREALIGHT_VK_RESULT(VK_ERROR_OUT_OF_HOST_MEMORY)
+        AREALIGHT_VK_RESULT(VK_ERROR_OUT_OF_DEVICE_MEMORY)
+        AREALIGHT_VK_RESULT(VK_ERROR_INITIALIZATION_FAILED)
+        AREALIGHT_VK_RESULT(VK_ERROR_DEVICE_LOST)
+        AREALIGHT_VK_RESULT(VK_ERROR_MEMORY_MAP_FAILED)
+        AREALIGHT_VK_RESULT(VK_ERROR_LAYER_NOT_PRESENT)
+        AREALIGHT_VK_RESULT(VK_ERROR_EXTENSION_NOT_PRESENT)
+        AREALIGHT_VK_RESULT(VK_ERROR_FEATURE_NOT_PRESENT)
+        AREALIGHT_VK_RESULT(VK_ERROR_INCOMPATIBLE_DRIVER)
+        AREALIGHT_VK_RESULT(VK_ERROR_TOO_MANY_OBJECTS)
+        AREALIGHT_VK_RESULT(VK_ERROR_FORMAT_NOT_SUPPORTED)
+        AREALIGHT_VK_RESULT(VK_ERROR_FRAGMENTED_POOL)
+        AREALIGHT_VK_RESULT(VK_ERROR_UNKNOWN)
+        AREALIGHT_VK_RESULT(VK_ERROR_OUT_OF_POOL_MEMORY)
+        AREALIGHT_VK_RESULT(VK_ERROR_INVALID_EXTERNAL_HANDLE)
+        AREALIGHT_VK_RESULT(VK_ERROR_FRAGMENTATION)
+        AREALIGHT_VK_RESULT(VK_ERROR_INVALID_OPAQUE_CAPTURE_ADDRESS)
+        AREALIGHT_VK_RESULT(VK_PIPELINE_COMPILE_REQUIRED)
+        AREALIGHT_VK_RESULT(VK_ERROR_INVALID_SHADER_NV)
+#undef AREALIGHT_VK_RESULT
+        default:
+            break;
+    }
+    return "unknown VkResult";
+}
+
+// Zero-initialized create-info with its sType: every optional member off, pNext null.
+template <typename T>
+T vk_struct(VkStructureType type) {
+    T value{};
+    value.sType = type;
+    return value;
+}
+
+// Emits errors to an optional consumer (an empty DiagnosticConsumer drops them).
+class Reporter {
+  public:
+    explicit Reporter(const DiagnosticConsumer& consumer) : consumer_(consumer) {}
+
+    bool error(std::string message) const {
+        if (consumer_) consumer_(Diagnostic{Severity::Error, "", 0, std::move(message)});
+        return false;
+    }
+    // Returns whether `result` is VK_SUCCESS, reporting "<call> failed: <VkResult>" otherwise.
+    bool check(VkResult result, const char* call) const {
+        if (result == VK_SUCCESS) return true;
+        std::string name = vk_result_name(result);
+        if (name == "unknown VkResult") name += " " + std::to_string(static_cast<int>(result));
+        return error(std::string(call) + " failed: " + name);
+    }
+
+  private:
+    const DiagnosticConsumer& consumer_;
+};
+
+// Owns one device-level handle; every vkDestroy*/vkFreeMemory used here has this shape.
+template <typename H>
+class DeviceHandle {
+  public:
+    using Destroy = void(VKAPI_PTR*)(VkDevice, H, const VkAllocationCallbacks*);
+
+    DeviceHandle() = default;
+    DeviceHandle(VkDevice device, H handle, Destroy destroy)
+        : device_(device), handle_(handle), destroy_(destroy) {}
+    DeviceHandle(DeviceHandle&& other) noexcept { *this = std::move(other); }
+    DeviceHandle& operator=(DeviceHandle&& other) noexcept {
+        if (this != &other) {
+            reset();
+            device_ = other.device_;
+            destroy_ = other.destroy_;
+            handle_ = std::exchange(other.handle_, VK_NULL_HANDLE);
+        }
+        return *this;
+    }
+    DeviceHandle(const DeviceHandle&) = delete;
+    DeviceHandle& operator=(const DeviceHandle&) = delete;
+    ~DeviceHandle() { reset(); }
+
+    H get() const { return handle_; }
+    // Gives up ownership without destroying: for handles the device may still be using.
+    void abandon() { handle_ = VK_NULL_HANDLE; }
+    void reset() {
+        if (handle_ != VK_NULL_HANDLE) destroy_(device_, handle_, nullptr);
+        handle_ = VK_NULL_HANDLE;
+    }
+
+  private:
+    VkDevice device_ = VK_NULL_HANDLE;
+    H handle_ = VK_NULL_HANDLE;
+    Destroy destroy_ = nullptr;
+};
+
+struct InstanceOwner {
+    VkInstance handle = VK_NULL_HANDLE;
+    InstanceOwner() = default;
+    InstanceOwner(const InstanceOwner&) = delete;
+    InstanceOwner& operator=(const InstanceOwner&) = delete;
+    ~InstanceOwner() {
+        if (handle != VK_NULL_HANDLE) vkDestroyInstance(handle, nullptr);
+    }
+};
+
+struct DeviceOwner {
+    VkDevice handle = VK_NULL_HANDLE;
+    DeviceOwner() = default;
+    DeviceOwner(const DeviceOwner&) = delete;
+    DeviceOwner& operator=(const DeviceOwner&) = delete;
+    ~DeviceOwner() {
+        if (handle != VK_NULL_HANDLE) vkDestroyDevice(handle, nullptr);
+    }
+};
+
+// Buffer declared after its memory, so it is destroyed first.
+struct HostBuffer {
+    DeviceHandle<VkDeviceMemory> memory;
+    DeviceHandle<VkBuffer> buffer;
+    VkDeviceSize size = 0;
+
+    void abandon() {
+        buffer.abandon();
+        memory.abandon();
+    }
+};
+
+// FNV-1a over the words: the pipeline cache key (entries also keep the words to rule out clashes).
+uint64_t hash_words(const std::vector<uint32_t>& words) {
+    uint64_t h = 1469598103934665603ull;
+    for (uint32_t w : words) {
+        for (int i = 0; i < 4; ++i) {
+            h ^= (w >> (8 * i)) & 0xffu;
+            h *= 1099511628211ull;
+        }
+    }
+    return h;
+}
+
+std::string icd_hint() {
+    const char* icd = std::getenv("VK_ICD_FILENAMES");
+    return std::string(
+               "no Vulkan device found (is mesa-vulkan-drivers installed? VK_ICD_FILENAMES=") +
+           (icd ? icd : "unset; lavapipe is /usr/share/vulkan/icd.d/lvp_icd.x86_64.json") + ")";
+}
+
+}  // namespace
+
+struct VulkanRunner::Impl {
+    struct CachedPipeline {
+        std::vector<uint32_t> words;
+        DeviceHandle<VkPipeline> pipeline;
+    };
+
+    // Declaration order is destruction order reversed: pipelines, layouts, device, instance.
+    InstanceOwner instance;
+    VkPhysicalDevice physical = VK_NULL_HANDLE;
+    VkPhysicalDeviceProperties properties{};
+    VkPhysicalDeviceMemoryProperties memory_properties{};
+    DeviceOwner device;
+    uint32_t queue_family = 0;
+    VkQueue queue = VK_NULL_HANDLE;
+    DeviceHandle<VkDescriptorSetLayout> set_layout;
+    DeviceHandle<VkPipelineLayout> pipeline_layout;
+    std::unordered_map<uint64_t, CachedPipeline> pipelines;
+    // Set when a fence wait timed out: work may still be pending on the device, and destroying
+    // objects in use is undefined (vkDestroy* valid usage), so everything is leaked instead.
+    bool lost = false;
+
+    ~Impl() {
+        if (!lost) return;
+        for (auto& entry : pipelines) entry.second.pipeline.abandon();
+        pipeline_layout.abandon();
+        set_layout.abandon();
+        device.handle = VK_NULL_HANDLE;
+        instance.handle = VK_NULL_HANDLE;
+    }
+
+    bool init_device(const Reporter& report);
+    const CachedPipeline* pipeline_for(const std::vector<uint32_t>& spirv, const Reporter& report);
+    bool create_buffer(VkDeviceSize size, HostBuffer& out, const Reporter& report) const;
+};
+
+namespace {
+
+struct Candidate {
+    VkPhysicalDevice device;
+    VkPhysicalDeviceProperties properties;
+    uint32_t queue_family;
+};
+
+// Usable: Vulkan 1.1 (SPIR-V 1.3 modules) and a queue family with compute.
+bool usable(VkPhysicalDevice device, const VkPhysicalDeviceProperties& properties,
+            uint32_t& queue_family) {
+    if (properties.apiVersion < VK_API_VERSION_1_1) return false;
+    uint32_t count = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
+    std::vector<VkQueueFamilyProperties> families(count);
+    vkGetPhysicalDeviceQueueFamilyProperties(device, &count, families.data());
+    for (uint32_t i = 0; i < count; ++i) {
+        if (families[i].queueFlags & VK_QUEUE_COMPUTE_BIT) {
+            queue_family = i;
+            return true;
+        }
+    }
+    return false;
+}
+
+}  // namespace
+
+std::unique_ptr<VulkanRunner> VulkanRunner::create(const std::string& device_name_substring,
+                                                   const DiagnosticConsumer& diag) {
+    const Reporter report(diag);
+    auto impl = std::make_unique<Impl>();
+
+    auto app = vk_struct<VkApplicationInfo>(VK_STRUCTURE_TYPE_APPLICATION_INFO);
+    app.pApplicationName = "arealight";
+    app.apiVersion = VK_API_VERSION_1_1;
+    auto instance_info = vk_struct<VkInstanceCreateInfo>(VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO);
+    instance_info.pApplicationInfo = &app;
+    // The loader answers VK_ERROR_INCOMPATIBLE_DRIVER when it finds no ICD at all.
+    const VkResult created = vkCreateInstance(&instance_info, nullptr, &impl->instance.handle);
+    if (created != VK_SUCCESS) {
+        report.error(icd_hint() + ": vkCreateInstance failed: " + vk_result_name(created));
+        return nullptr;
+    }
+
+    uint32_t count = 0;
+    if (!report.check(vkEnumeratePhysicalDevices(impl->instance.handle, &count, nullptr),
+                      "vkEnumeratePhysicalDevices")) {
+        return nullptr;
+    }
+    std::vector<VkPhysicalDevice> devices(count);
+    // VK_INCOMPLETE only if devices appeared between the calls; the first `count` are still valid.
+    const VkResult listed =
+        vkEnumeratePhysicalDevices(impl->instance.handle, &count, devices.data());
+    if (listed != VK_INCOMPLETE && !report.check(listed, "vkEnumeratePhysicalDevices")) {
+        return nullptr;
+    }
+    devices.resize(count);
+    if (devices.empty()) {
+        report.error(icd_hint());
+        return nullptr;
+    }
+
+    std::string available;
+    bool chosen = false;
+    for (VkPhysicalDevice device : devices) {
+        VkPhysicalDeviceProperties properties;
+        vkGetPhysicalDeviceProperties(device, &properties);
+        uint32_t family = 0;
+        const bool ok = usable(device, properties, family);
+        const std::string name = properties.deviceName;
+        available +=
+            (available.empty() ? "'" : ", '") + name + "'" + (ok ? "" : " (no Vulkan 1.1 compute)");
+        if (chosen || !ok) continue;
+        if (name.find(device_name_substring) == std::string::npos) continue;
+        impl->physical = device;
+        impl->properties = properties;
+        impl->queue_family = family;
+        chosen = true;
+    }
+    if (!chosen) {
+        if (device_name_substring.empty()) {
+            report.error(icd_hint() + "; devices present: " + available);
+        } else {
+            report.error("no Vulkan device name contains '" + device_name_substring +
+                         "'; available: " + available);
+        }
+        return nullptr;
+    }
+    if (!impl->init_device(report)) return nullptr;
+    return std::unique_ptr<VulkanRunner>(new VulkanRunner(std::move(impl)));
+}
+
+bool VulkanRunner::Impl::init_device(const Reporter& report) {
+    vkGetPhysicalDeviceMemoryProperties(physical, &memory_properties);
+
+    const float priority = 1.0f;
+    auto queue_info =
+        vk_struct<VkDeviceQueueCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO);
+    queue_info.queueFamilyIndex = queue_family;
+    queue_info.queueCount = 1;
+    queue_info.pQueuePriorities = &priority;
+    auto device_info = vk_struct<VkDeviceCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO);
+    device_info.queueCreateInfoCount = 1;
+    device_info.pQueueCreateInfos = &queue_info;
+    if (!report.check(vkCreateDevice(physical, &device_info, nullptr, &device.handle),
+                      "vkCreateDevice")) {
+        return false;
+    }
+    vkGetDeviceQueue(device.handle, queue_family, 0, &queue);
+
+    VkDescriptorSetLayoutBinding bindings[2] = {};
+    for (uint32_t i = 0; i < 2; ++i) {
+        bindings[i].binding = i;
+        bindings[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        bindings[i].descriptorCount = 1;
+        bindings[i].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
+    }
+    auto set_info = vk_struct<VkDescriptorSetLayoutCreateInfo>(
+        VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
+    set_info.bindingCount = 2;
+    set_info.pBindings = bindings;
+    VkDescriptorSetLayout set = VK_NULL_HANDLE;
+    if (!report.check(vkCreateDescriptorSetLayout(device.handle, &set_info, nullptr, &set),
+                      "vkCreateDescriptorSetLayout")) {
+        return false;
+    }
+    set_layout = {device.handle, set, vkDestroyDescriptorSetLayout};
+
+    const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(PushConstants)};
+    auto layout_info =
+        vk_struct<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
+    layout_info.setLayoutCount = 1;
+    layout_info.pSetLayouts = &set;
+    layout_info.pushConstantRangeCount = 1;
+    layout_info.pPushConstantRanges = &push;
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    if (!report.check(vkCreatePipelineLayout(device.handle, &layout_info, nullptr, &layout),
+                      "vkCreatePipelineLayout")) {
+        return false;
+    }
+    pipeline_layout = {device.handle, layout, vkDestroyPipelineLayout};
+    return true;
+}
+
+const VulkanRunner::Impl::CachedPipeline* VulkanRunner::Impl::pipeline_for(
+    const std::vector<uint32_t>& spirv, const Reporter& report) {
+    const uint64_t key = hash_words(spirv);
+    auto found = pipelines.find(key);
+    if (found != pipelines.end() && found->second.words == spirv) return &found->second;
+
+    auto module_info =
+        vk_struct<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
+    module_info.codeSize = spirv.size() * sizeof(uint32_t);
+    module_info.pCode = spirv.data();
+    VkShaderModule raw_module = VK_NULL_HANDLE;
+    if (!report.check(vkCreateShaderModule(device.handle, &module_info, nullptr, &raw_module),
+                      "vkCreateShaderModule")) {
+        return nullptr;
+    }
+    // A module may be destroyed once pipelines are created from it (vkDestroyShaderModule).
+    const DeviceHandle<VkShaderModule> module(device.handle, raw_module, vkDestroyShaderModule);
+
+    auto pipeline_info =
+        vk_struct<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
+    pipeline_info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+    pipeline_info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    pipeline_info.stage.module = module.get();
+    pipeline_info.stage.pName = "main";
+    pipeline_info.layout = pipeline_layout.get();
+    VkPipeline raw_pipeline = VK_NULL_HANDLE;
+    if (!report.check(vkCreateComputePipelines(device.handle, VK_NULL_HANDLE, 1, &pipeline_info,
+                                               nullptr, &raw_pipeline),
+                      "vkCreateComputePipelines")) {
+        return nullptr;
+    }
+    CachedPipeline& entry = pipelines[key];
+    entry.words = spirv;
+    entry.pipeline = {device.handle, raw_pipeline, vkDestroyPipeline};
+    return &entry;
+}
+
+bool VulkanRunner::Impl::create_buffer(VkDeviceSize size, HostBuffer& out,
+                                       const Reporter& report) const {
+    auto buffer_info = vk_struct<VkBufferCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO);
+    buffer_info.size = size;
+    buffer_info.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+    buffer_info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    VkBuffer buffer = VK_NULL_HANDLE;
+    if (!report.check(vkCreateBuffer(device.handle, &buffer_info, nullptr, &buffer),
+                      "vkCreateBuffer")) {
+        return false;
+    }
+    out.buffer = {device.handle, buffer, vkDestroyBuffer};
+    out.size = size;
+
+    VkMemoryRequirements requirements;
+    vkGetBufferMemoryRequirements(device.handle, buffer, &requirements);
+    // Coherent host memory needs no flush/invalidate; cached makes the readback fast.
+    const VkMemoryPropertyFlags required =
+        VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+    uint32_t type = UINT32_MAX;
+    for (const VkMemoryPropertyFlags wanted :
+         {required | VK_MEMORY_PROPERTY_HOST_CACHED_BIT, required}) {
+        for (uint32_t i = 0; i < memory_properties.memoryTypeCount && type == UINT32_MAX; ++i) {
+            if ((requirements.memoryTypeBits & (1u << i)) &&
+                (memory_properties.memoryTypes[i].propertyFlags & wanted) == wanted) {
+                type = i;
+            }
+        }
+    }
+    if (type == UINT32_MAX) {
+        return report.error("no HOST_VISIBLE | HOST_COHERENT memory type for a storage buffer");
+    }
+    auto alloc_info = vk_struct<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
+    alloc_info.allocationSize = requirements.size;
+    alloc_info.memoryTypeIndex = type;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    if (!report.check(vkAllocateMemory(device.handle, &alloc_info, nullptr, &memory),
+                      "vkAllocateMemory")) {
+        return false;
+    }
+    out.memory = {device.handle, memory, vkFreeMemory};
+    return report.check(vkBindBufferMemory(device.handle, buffer, memory, 0), "vkBindBufferMemory");
+}
+
+VulkanRunner::VulkanRunner(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+VulkanRunner::~VulkanRunner() = default;
+
+std::string VulkanRunner::device_name() const {
+    return impl_->properties.deviceName;
+}
+
+bool VulkanRunner::run(const std::vector<uint32_t>& spirv, const void* input,
+                       std::size_t input_bytes, std::size_t count, std::vector<float>& output,
+                       std::size_t output_floats_per_item, const DiagnosticConsumer& diag,
+                       double* seconds) {
+    const Reporter report(diag);
+    Impl& m = *impl_;
+    const VkDevice device = m.device.handle;
+    if (m.lost) return report.error("Vulkan runner unusable: an earlier fence wait timed out");
+    if (spirv.size() < 5 || spirv[0] != kSpirvMagic) {
+        return report.error("run: not a SPIR-V module (missing magic number)");
+    }
+    if (input_bytes > 0 && input == nullptr) return report.error("run: input is null");
+    if (count > std::numeric_limits<uint32_t>::max()) {
+        return report.error("run: count " + std::to_string(count) +
+                            " exceeds the uint push constant");
+    }
+    // maxStorageBufferRange bounds what one descriptor can address (VkPhysicalDeviceLimits).
+    const uint64_t range_limit = m.properties.limits.maxStorageBufferRange;
+    const uint64_t output_floats = static_cast<uint64_t>(count) * output_floats_per_item;
+    if (output_floats_per_item != 0 && output_floats / output_floats_per_item != count) {
+        return report.error("run: output size overflows");
+    }
+    if (input_bytes > range_limit || output_floats * sizeof(float) > range_limit) {
+        return report.error("run: buffer larger than maxStorageBufferRange (" +
+                            std::to_string(range_limit) + " bytes); split the input");
+    }
+
+    const Impl::CachedPipeline* pipeline = m.pipeline_for(spirv, report);
+    if (!pipeline) return false;
+    if (count == 0) {
+        output.clear();
+        if (seconds) *seconds = 0.0;
+        return true;
+    }
+
+    // Zero-sized buffers are invalid (VkBufferCreateInfo valid usage), so keep one word at least.
+    HostBuffer in_buffer, out_buffer;
+    const VkDeviceSize out_bytes = output_floats * sizeof(float);
+    if (!m.create_buffer(std::max<VkDeviceSize>(input_bytes, 4), in_buffer, report) ||
+        !m.create_buffer(std::max<VkDeviceSize>(out_bytes, 4), out_buffer, report)) {
+        return false;
+    }
+
+    // Upload; host writes before vkQueueSubmit are visible to the device without a barrier
+    // (Vulkan spec, "Host Write Ordering Guarantees").
+    void* mapped = nullptr;
+    if (!report.check(vkMapMemory(device, in_buffer.memory.get(), 0, VK_WHOLE_SIZE, 0, &mapped),
+                      "vkMapMemory")) {
+        return false;
+    }
+    if (input_bytes > 0) std::memcpy(mapped, input, input_bytes);
+    vkUnmapMemory(device, in_buffer.memory.get());
+    // Outputs the shader never writes read back as NaN rather than a plausible 0.
+    if (!report.check(vkMapMemory(device, out_buffer.memory.get(), 0, VK_WHOLE_SIZE, 0, &mapped),
+                      "vkMapMemory")) {
+        return false;
+    }
+    std::fill_n(static_cast<float*>(mapped), out_bytes / sizeof(float),
+                std::numeric_limits<float>::quiet_NaN());
+    vkUnmapMemory(device, out_buffer.memory.get());
+
+    // Descriptors: binding 0 = input, binding 1 = output.
+    const VkDescriptorPoolSize pool_size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2};
+    auto pool_info =
+        vk_struct<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
+    pool_info.maxSets = 1;
+    pool_info.poolSizeCount = 1;
+    pool_info.pPoolSizes = &pool_size;
+    VkDescriptorPool raw_pool = VK_NULL_HANDLE;
+    if (!report.check(vkCreateDescriptorPool(device, &pool_info, nullptr, &raw_pool),
+                      "vkCreateDescriptorPool")) {
+        return false;
+    }
+    DeviceHandle<VkDescriptorPool> descriptor_pool(device, raw_pool, vkDestroyDescriptorPool);
+    const VkDescriptorSetLayout set_layout = m.set_layout.get();
+    auto set_info =
+        vk_struct<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
+    set_info.descriptorPool = descriptor_pool.get();
+    set_info.descriptorSetCount = 1;
+    set_info.pSetLayouts = &set_layout;
+    VkDescriptorSet set = VK_NULL_HANDLE;  // freed with its pool
+    if (!report.check(vkAllocateDescriptorSets(device, &set_info, &set),
+                      "vkAllocateDescriptorSets")) {
+        return false;
+    }
+    const VkDescriptorBufferInfo buffer_infos[2] = {
+        {in_buffer.buffer.get(), 0, VK_WHOLE_SIZE},
+        {out_buffer.buffer.get(), 0, VK_WHOLE_SIZE},
+    };
+    VkWriteDescriptorSet writes[2] = {};
+    for (uint32_t i = 0; i < 2; ++i) {
+        writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+        writes[i].dstSet = set;
+        writes[i].dstBinding = i;
+        writes[i].descriptorCount = 1;
+        writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        writes[i].pBufferInfo = &buffer_infos[i];
+    }
+    vkUpdateDescriptorSets(device, 2, writes, 0, nullptr);
+
+    auto command_pool_info =
+        vk_struct<VkCommandPoolCreateInfo>(VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO);
+    command_pool_info.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+    command_pool_info.queueFamilyIndex = m.queue_family;
+    VkCommandPool raw_command_pool = VK_NULL_HANDLE;
+    if (!report.check(vkCreateCommandPool(device, &command_pool_info, nullptr, &raw_command_pool),
+                      "vkCreateCommandPool")) {
+        return false;
+    }
+    DeviceHandle<VkCommandPool> command_pool(device, raw_command_pool, vkDestroyCommandPool);
+    auto command_info =
+        vk_struct<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
+    command_info.commandPool = command_pool.get();
+    command_info.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    command_info.commandBufferCount = 1;
+    VkCommandBuffer commands = VK_NULL_HANDLE;  // freed with its pool
+    if (!report.check(vkAllocateCommandBuffers(device, &command_info, &commands),
+                      "vkAllocateCommandBuffers")) {
+        return false;
+    }
+
+    // Record: one dispatch per batch, each batch told its first item through `base`.
+    auto begin = vk_struct<VkCommandBufferBeginInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO);
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    if (!report.check(vkBeginCommandBuffer(commands, &begin), "vkBeginCommandBuffer")) return false;
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline->pipeline.get());
+    vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, m.pipeline_layout.get(), 0, 1,
+                            &set, 0, nullptr);
+    const uint64_t max_groups =
+        std::min<uint64_t>(m.properties.limits.maxComputeWorkGroupCount[0], 65535);
+    const uint64_t batch_items = max_groups * kLocalSizeX;
+    for (uint64_t base = 0; base < count; base += batch_items) {
+        const uint64_t items = std::min<uint64_t>(batch_items, count - base);
+        const PushConstants push{static_cast<uint32_t>(count), static_cast<uint32_t>(base)};
+        vkCmdPushConstants(commands, m.pipeline_layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
+                           sizeof(push), &push);
+        vkCmdDispatch(commands, static_cast<uint32_t>((items + kLocalSizeX - 1) / kLocalSizeX), 1,
+                      1);
+    }
+    // Shader writes must be made available to host reads after the fence (spec, "Host access").
+    auto to_host = vk_struct<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+    to_host.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+    to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+                         0, 1, &to_host, 0, nullptr, 0, nullptr);
+    if (!report.check(vkEndCommandBuffer(commands), "vkEndCommandBuffer")) return false;
+
+    auto fence_info = vk_struct<VkFenceCreateInfo>(VK_STRUCTURE_TYPE_FENCE_CREATE_INFO);
+    VkFence raw_fence = VK_NULL_HANDLE;
+    if (!report.check(vkCreateFence(device, &fence_info, nullptr, &raw_fence), "vkCreateFence")) {
+        return false;
+    }
+    DeviceHandle<VkFence> fence(device, raw_fence, vkDestroyFence);
+
+    // Submit and wait: the only part that `seconds` measures.
+    auto submit = vk_struct<VkSubmitInfo>(VK_STRUCTURE_TYPE_SUBMIT_INFO);
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &commands;
+    const auto start = std::chrono::steady_clock::now();
+    if (!report.check(vkQueueSubmit(m.queue, 1, &submit, fence.get()), "vkQueueSubmit")) {
+        return false;
+    }
+    const VkResult waited = vkWaitForFences(device, 1, &raw_fence, VK_TRUE, kFenceTimeoutNs);
+    const auto stop = std::chrono::steady_clock::now();
+    if (waited != VK_SUCCESS) {
+        // Submitted work may still be running: leak rather than destroy objects in use.
+        m.lost = true;
+        fence.abandon();
+        command_pool.abandon();
+        descriptor_pool.abandon();
+        in_buffer.abandon();
+        out_buffer.abandon();
+        if (waited == VK_TIMEOUT) {
+            return report.error("vkWaitForFences timed out after " +
+                                std::to_string(kFenceTimeoutNs / 1000000000) + " s");
+        }
+        return report.check(waited, "vkWaitForFences");
+    }
+
+    // Read back (coherent memory: no vkInvalidateMappedMemoryRanges needed).
+    if (!report.check(vkMapMemory(device, out_buffer.memory.get(), 0, VK_WHOLE_SIZE, 0, &mapped),
+                      "vkMapMemory")) {
+        return false;
+    }
+    const float* results = static_cast<const float*>(mapped);
+    std::vector<float> read(results, results + output_floats);
+    vkUnmapMemory(device, out_buffer.memory.get());
+    output.swap(read);
+    if (seconds) *seconds = std::chrono::duration<double>(stop - start).count();
+    return true;
+}
+
+}  // namespace arealight

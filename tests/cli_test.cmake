@@ -1,0 +1,54 @@
+# Runs the arealight executable as a user would and checks exit codes, messages
+# and that a failed run leaves its output untouched. Invoked by ctest with
+# -DAREALIGHT=... -DSOURCE=<tests dir> -DWORK=<scratch dir>.
+file(REMOVE_RECURSE "${WORK}")
+file(MAKE_DIRECTORY "${WORK}")
+
+function(expect_exit code)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL code)
+    message(FATAL_ERROR "expected exit ${code}, got ${rc} from: ${ARGN}\nstdout: ${out}\nstderr: ${err}")
+  endif()
+  set(LAST_ERR "${err}" PARENT_SCOPE)
+  set(LAST_OUT "${out}" PARENT_SCOPE)
+endfunction()
+
+# A malformed case: exit 1, the message names file, case and field, and the
+# existing output keeps its bytes while a new output path is never created.
+file(WRITE "${WORK}/existing.json" "precious")
+expect_exit(1 "${AREALIGHT}" reference --cases "${SOURCE}/data/bad_polygon.cases.json" --out "${WORK}/existing.json")
+if(NOT LAST_ERR MATCHES "bad_polygon.cases.json: case 'bent-quad': field 'light.vertices")
+  message(FATAL_ERROR "message does not name file, case and field: ${LAST_ERR}")
+endif()
+file(READ "${WORK}/existing.json" kept)
+if(NOT kept STREQUAL "precious")
+  message(FATAL_ERROR "output was modified on bad input: ${kept}")
+endif()
+expect_exit(1 "${AREALIGHT}" reference --cases "${SOURCE}/data/bad_polygon.cases.json" --out "${WORK}/new.json")
+if(EXISTS "${WORK}/new.json")
+  message(FATAL_ERROR "output created on bad input")
+endif()
+
+# A missing input file is bad input too.
+expect_exit(1 "${AREALIGHT}" reference --cases "${WORK}/no-such-file.json" --out "${WORK}/new.json")
+
+# Usage errors exit 2; --help on every command exits 0 and says what it does.
+expect_exit(2 "${AREALIGHT}")
+expect_exit(2 "${AREALIGHT}" reference --cases x.json)
+expect_exit(2 "${AREALIGHT}" frobnicate)
+foreach(cmd variants eval reference)
+  expect_exit(0 "${AREALIGHT}" ${cmd} --help)
+  if(NOT LAST_OUT MATCHES "--")
+    message(FATAL_ERROR "${cmd} --help printed no options: ${LAST_OUT}")
+  endif()
+endforeach()
+
+# A good run writes a complete results file with every quantity.
+expect_exit(0 "${AREALIGHT}" reference --cases "${SOURCE}/../examples/cases.json" --out "${WORK}/ref.json" --threads 2)
+file(READ "${WORK}/ref.json" ref)
+foreach(key "\"format\": \"arealight-results/1\"" "\"diffuse\"" "\"specular\"" "\"moment\"" "\"ndf\"" "\"error\"")
+  string(FIND "${ref}" "${key}" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "results file lacks ${key}")
+  endif()
+endforeach()

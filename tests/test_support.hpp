@@ -1,0 +1,70 @@
+// Helpers shared by the tests: case construction, rigid motions, tolerances.
+#pragma once
+
+#include <cmath>
+#include <glm/glm.hpp>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "arealight/case.hpp"
+
+namespace arealight::test {
+
+inline glm::dvec3 g(const Vec3& a) {
+    return {a[0], a[1], a[2]};
+}
+inline Vec3 a3(const glm::dvec3& v) {
+    return {v.x, v.y, v.z};
+}
+
+// |x - ref| / max(|ref|, floor): the metric of shared/tools/score.
+inline double rel_err(double x, double ref, double floor = 1e-3) {
+    return std::abs(x - ref) / std::max(std::abs(ref), floor);
+}
+
+inline Case polygon_case(const std::string& id, std::vector<glm::dvec3> verts, glm::dvec3 n,
+                         glm::dvec3 v, Distribution d, double param, bool two_sided = false) {
+    Case c;
+    c.id = id;
+    c.p = {0, 0, 0};
+    c.n = a3(n);
+    c.v = a3(v);
+    c.light.type = LightType::Polygon;
+    for (auto& x : verts) c.light.vertices.push_back(a3(x));
+    c.light.two_sided = two_sided;
+    c.material.distribution = d;
+    (d == Distribution::Phong || d == Distribution::Blinn ? c.material.exponent
+                                                          : c.material.alpha) = param;
+    return c;
+}
+
+// Uniformly distributed rotation (normalized Gaussian quaternion).
+inline glm::dmat3 random_rotation(std::mt19937_64& rng) {
+    std::normal_distribution<double> N(0.0, 1.0);
+    double w = N(rng), x = N(rng), y = N(rng), z = N(rng);
+    const double s = 1.0 / std::sqrt(w * w + x * x + y * y + z * z);
+    w *= s, x *= s, y *= s, z *= s;
+    return glm::transpose(
+        glm::dmat3(1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y),
+                   2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x),
+                   2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)));
+}
+
+// Applies x -> R x + t to every point and R to every direction of the case.
+inline Case transformed(const Case& c, const glm::dmat3& R, const glm::dvec3& t) {
+    Case o = c;
+    auto P = [&](const Vec3& x) { return a3(R * g(x) + t); };
+    auto D = [&](const Vec3& x) { return a3(R * g(x)); };
+    o.p = P(c.p);
+    o.n = D(c.n);
+    o.v = D(c.v);
+    for (auto& x : o.light.vertices) x = P(x);
+    o.light.center = P(c.light.center);
+    o.light.u = D(c.light.u);
+    o.light.v = D(c.light.v);
+    for (auto& a : o.light.axes) a = D(a);
+    return o;
+}
+
+}  // namespace arealight::test
