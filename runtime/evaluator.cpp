@@ -15,8 +15,23 @@ namespace {
 Vec3 sub(const Vec3& a, const Vec3& b) {
     return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
 }
+double dot(const Vec3& a, const Vec3& b) {
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
 double norm(const Vec3& a) {
-    return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    return std::sqrt(dot(a, a));
+}
+Vec3 scale(const Vec3& a, double s) {
+    return {a[0] * s, a[1] * s, a[2] * s};
+}
+
+// Orthonormal x, y completing the unit z (Duff et al. 2017, branch-free).
+void orthonormal_basis(const Vec3& z, Vec3& x, Vec3& y) {
+    const double s = std::copysign(1.0, z[2]);
+    const double a = -1.0 / (s + z[2]);
+    const double b = z[0] * z[1] * a;
+    x = {1.0 + s * z[0] * z[0] * a, s * b, -s * z[0]};
+    y = {b, s + z[1] * z[1] * a, -z[1]};
 }
 
 Vec3 light_centre(const Light& L) {
@@ -47,28 +62,37 @@ std::vector<float> pack_cases(const std::vector<const Case*>& cases) {
     for (std::size_t i = 0; i < cases.size(); ++i) {
         const Case& c = *cases[i];
         float* o = &out[i * kFloatsPerCase];
-        const double nl = norm(c.n), vl = norm(c.v);
-        for (int k = 0; k < 3; ++k) {
-            o[k] = static_cast<float>(c.n[k] / nl);
-            o[4 + k] = static_cast<float>(c.v[k] / vl);
-        }
+        // Directions and solid angles are invariant under rotations and scalings
+        // about p: put the light's centre at distance 1 on +z.
+        const Vec3 centre = light_centre(c.light);
+        const Vec3 rel = sub(centre, c.p);
+        double dist = norm(rel);
+        if (!(dist > 0.0) || !std::isfinite(dist)) dist = 1.0;
+        const Vec3 z = scale(rel, 1.0 / dist);
+        Vec3 x, y;
+        orthonormal_basis(z, x, y);
+        auto frame = [&](const Vec3& a, float* dst) {
+            dst[0] = static_cast<float>(dot(a, x));
+            dst[1] = static_cast<float>(dot(a, y));
+            dst[2] = static_cast<float>(dot(a, z));
+        };
+        const Vec3 n = scale(c.n, 1.0 / norm(c.n)), v = scale(c.v, 1.0 / norm(c.v));
+        const double nv = dot(n, v);
+        const Vec3 r = {2 * nv * n[0] - v[0], 2 * nv * n[1] - v[1], 2 * nv * n[2] - v[2]};
+        frame(n, o);
+        frame(v, o + 4);
+        frame(scale(r, 1.0 / norm(r)), o + 8);
         const Material& m = c.material;
         const bool exponent =
             m.distribution == Distribution::Phong || m.distribution == Distribution::Blinn;
-        o[8] = static_cast<float>(exponent ? m.exponent : m.alpha);
-        o[9] = c.light.two_sided ? 1.0f : 0.0f;
-        o[10] = static_cast<float>(c.light.vertices.size());
-        // Directions and solid angles are scale-invariant about p: scaling by the
-        // light's distance keeps fp32 far from overflow and underflow. Offsets from
-        // the centre are formed in double so they keep their relative precision.
-        const Vec3 centre = light_centre(c.light);
-        double dist = norm(sub(centre, c.p));
-        if (!(dist > 0.0) || !std::isfinite(dist)) dist = 1.0;
-        const Vec3 rel = sub(centre, c.p);
-        for (int j = 0; j < 3; ++j) o[12 + j] = static_cast<float>(rel[j] / dist);
+        o[12] = static_cast<float>(exponent ? m.exponent : m.alpha);
+        o[13] = c.light.two_sided ? 1.0f : 0.0f;
+        o[14] = static_cast<float>(c.light.vertices.size());
+        frame(scale(rel, 1.0 / dist), o + 16);
+        // Offsets from the centre are formed in double, so small distant polygons
+        // keep the relative precision of their edges.
         for (std::size_t k = 0; k < c.light.vertices.size() && k < 8; ++k) {
-            const Vec3 d = sub(c.light.vertices[k], centre);
-            for (int j = 0; j < 3; ++j) o[16 + 4 * k + j] = static_cast<float>(d[j] / dist);
+            frame(scale(sub(c.light.vertices[k], centre), 1.0 / dist), o + 20 + 4 * k);
         }
     }
     return out;

@@ -5,14 +5,18 @@
 const float AL_PI = 3.14159265358979f;
 const float AL_TWO_PI = 6.28318530717959f;
 
-// One case, normalized on the host (CONTRACT.md 1): p moved to the origin and
-// lengths divided by the light's distance; n and v unit. center = the light's
-// centre; verts = polygon vertices relative to it (offsets keep their own
-// relative precision, so small distant polygons keep accurate edges).
-// params = (exponent or alpha, two_sided, vertex count, 0). 192 bytes, std430.
+// One case, normalized on the host (CONTRACT.md 1), in double precision: p moved
+// to the origin, lengths divided by the light's distance, and the frame rotated
+// so that the light's centre lies on +z. Near the light, directions then differ
+// from the pole in small components that fp32 holds to full relative precision
+// (in a world frame the edges' distances to r would carry 6e-8 absolute error).
+// n, v unit; r = 2 (n.v) n - v formed on the host for the same reason. verts =
+// polygon vertices relative to the centre. params = (exponent or alpha,
+// two_sided, vertex count, 0). 208 bytes, std430.
 struct AlCase {
     vec4 n;
     vec4 v;
+    vec4 r;
     vec4 params;
     vec4 center;
     vec4 verts[8];

@@ -1,8 +1,5 @@
 // Energy-conserving Phong, CONTRACT.md 2: f = (N+2)/(2 pi) (r.w)_+^N.
 
-// Mirror direction r = 2 (n.v) n - v for unit n, v.
-vec3 al_mirror(vec3 n, vec3 v) { return 2.0f * dot(n, v) * n - v; }
-
 // (r.w)_+^N for unit r, w and N in [1, 1e5]. Relative error ~N ulp of log(r.w),
 // from 1 - r.w = |r - w|^2 / 2 (no cancellation) and log1p.
 float al_phong_power(vec3 r, vec3 w, float N) {

@@ -96,7 +96,7 @@ AlPoly al_polygon_directions(AlCase c, float side) {
 // Baseline: the polygon's centre as a point light of the same power, solid angle
 // ~ area cos(theta_l) / d^2. Error grows with the light's angular size; O(1), cheapest.
 vec4 al_shade(AlCase c) {
-    vec3 n = vec3(c.n), v = vec3(c.v);
+    vec3 n = vec3(c.n);
     float side = al_polygon_side(c);
     if (side == 0.0f) return vec4(0.0f);
     int count = int(c.params.z);
@@ -112,7 +112,7 @@ vec4 al_shade(AlCase c) {
     float solid_angle = abs(dot(area2, w)) * 0.5f / d2;
     float nw = max(dot(n, w), 0.0f);
     float N = c.params.x;
-    float spec = al_phong_brdf(al_mirror(n, v), w, N) * nw * solid_angle;
+    float spec = al_phong_brdf(vec3(c.r), w, N) * nw * solid_angle;
     return vec4(nw / AL_PI * solid_angle, spec, 0.0f, 0.0f);
 }
 #endif
@@ -122,22 +122,33 @@ vec4 al_shade(AlCase c) {
 // of n (diffuse), then by r's hemisphere ((r.w)_+ vanishes beyond), and sum the
 // boundary integrals of method_exact_phong.glsl.
 vec4 al_shade(AlCase c) {
-    vec3 n = vec3(c.n), v = vec3(c.v);
+    vec3 n = vec3(c.n);
     float side = al_polygon_side(c);
     if (side == 0.0f) return vec4(0.0f);
     float N = c.params.x;
-    vec3 r = al_mirror(n, v);
+    vec3 r = vec3(c.r);
     AlPoly lit = al_clip(al_polygon_directions(c, side), n);
     float diffuse = al_polygon_diffuse(lit, n);
     AlPoly D = al_clip(lit, r);
     vec3 sums = vec3(0.0f);
     bool inside = D.count >= 3;
+    float sweep_near = 0.0f, sweep_far = 0.0f, size_near = 0.0f, size_far = 0.0f;
     for (int i = 0; i < AL_POLY_CAP; ++i) {
         if (i >= D.count) break;
         inside = inside && dot(D.m[i], r) >= 0.0f;
-        sums += al_phong_edge(D.v[i], D.v[i + 1 < D.count ? i + 1 : 0], D.m[i], r, n, N);
+        AlPhongEdge e = al_phong_edge(D.v[i], D.v[i + 1 < D.count ? i + 1 : 0], D.m[i], r, n, N);
+        sums += e.sums;
+        if (e.near_edge) {
+            sweep_near += e.sweep;
+            size_near += abs(e.sweep);
+        } else {
+            sweep_far += e.sweep;
+            size_far += abs(e.sweep);
+        }
     }
-    float winding = inside ? AL_TWO_PI : 0.0f;
+    // 2 pi [r in D] - sum over near arcs of their sweep equals the far arcs' sweep:
+    // take whichever group cancels less.
+    float winding = size_near <= size_far ? (inside ? AL_TWO_PI : 0.0f) - sweep_near : sweep_far;
     float moment = (winding - sums.x) / AL_TWO_PI;
     float specular = (dot(r, n) * (winding - sums.y) + sums.z) / AL_TWO_PI;
     return vec4(diffuse, specular, moment, 0.0f);

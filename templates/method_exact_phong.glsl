@@ -23,9 +23,18 @@
 // public phong polygon cases (oracle at 1e-10): 16 nodes max 3e-9 typical, 3e-8 glossy;
 // 8 nodes max 2e-4 typical. fp32 rounding adds ~1e-6.
 
-// Per-edge sums for the arc a -> b with inward unit normal m:
-// x = (r.m) T_(N+1), y = (r.m) T_N, z = (n.m) int x^N dtau.
-vec3 al_phong_edge(vec3 a, vec3 b, vec3 m, vec3 r, vec3 n, float N) {
+// One arc's share of the boundary sums. The azimuth swept about r is kept apart:
+// its signed total is exactly 2 pi [r in D], so the driver can add the smaller of
+// two equivalent groups instead of cancelling O(1) sweeps against the winding.
+struct AlPhongEdge {
+    vec3 sums;    // far: (r.m) T_(N+1), (r.m) T_N; near: -(r.m) int G_(N+1), -(r.m) int G_N;
+                  // z: (n.m) int x^N dtau. Then T_k = [near] sweep + sums.
+    float sweep;  // signed azimuth swept about r
+    bool near_edge;
+};
+
+// Per-arc sums for the arc a -> b with inward unit normal m.
+AlPhongEdge al_phong_edge(vec3 a, vec3 b, vec3 m, vec3 r, vec3 n, float N) {
     float rm = dot(r, m);
     float s = abs(rm);
     vec3 foot = r - rm * m;
@@ -61,9 +70,12 @@ vec3 al_phong_edge(vec3 a, vec3 b, vec3 m, vec3 r, vec3 n, float N) {
         }
     }
     acc *= half_width;
-    if (far_edge) return vec3(rm * acc.x, rm * acc.y, dot(n, m) * acc.z);
+    AlPhongEdge e;
     // Signed azimuth swept about r: psi = atan(sin tau, s cos tau).
-    float sweep = (rm >= 0.0f ? 1.0f : -1.0f) *
-                  (al_atan2(sin(tb), s * cos(tb)) - al_atan2(sin(ta), s * cos(ta)));
-    return vec3(sweep - rm * acc.x, sweep - rm * acc.y, dot(n, m) * acc.z);
+    e.sweep = (rm >= 0.0f ? 1.0f : -1.0f) *
+              (al_atan2(sin(tb), s * cos(tb)) - al_atan2(sin(ta), s * cos(ta)));
+    e.near_edge = !far_edge;
+    float sgn = far_edge ? 1.0f : -1.0f;
+    e.sums = vec3(sgn * rm * acc.x, sgn * rm * acc.y, dot(n, m) * acc.z);
+    return e;
 }

@@ -18,9 +18,10 @@ constexpr double kPi = 3.14159265358979323846;
 // fp32 evaluation of an exact method: the acceptance bar of the exact variant.
 constexpr double kExactTol = 1e-4;
 // The two backends run the same math in fp32; they differ in sin/cos/exp and in
-// operation order. Measured worst over 200 random cases: 2.8e-5 (the diffuse of a
-// small polygon, where Lambert's edge sum cancels). Issue 4 asks for 1e-5.
-constexpr double kBackendTol = 1e-4;
+// operation order. Measured worst over these 200 random cases: 1.9e-5 (the diffuse
+// of a small polygon, where Lambert's edge sum cancels); on the public phong
+// polygon cases 2.0e-5. Issue 4 asks for 1e-5: not reached yet.
+constexpr double kBackendTol = 3e-5;
 
 Evaluator& evaluator(Backend b) {
     static std::map<Backend, std::unique_ptr<Evaluator>> cache;

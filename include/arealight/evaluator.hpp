@@ -22,11 +22,12 @@ const char* to_string(Backend b);
 // polygon no larger than `verts`, and sidedness it supports.
 bool case_applies(const Variant& v, const Case& c);
 
-// Cases in the AlCase layout of templates/common.glsl (48 floats each): p moved to
-// the origin, lengths divided by the distance to the light's centre, n and v unit,
-// polygon vertices as offsets from the centre.
+// Cases in the AlCase layout of templates/common.glsl (52 floats each), formed in
+// double: p moved to the origin, lengths divided by the distance to the light's
+// centre, the frame rotated to put that centre on +z, n, v and r unit, polygon
+// vertices as offsets from the centre.
 std::vector<float> pack_cases(const std::vector<const Case*>& cases);
-constexpr std::size_t kFloatsPerCase = 48;
+constexpr std::size_t kFloatsPerCase = 52;
 constexpr std::size_t kFloatsPerResult = 4;
 
 struct EvalOptions {

@@ -15,14 +15,18 @@
 const float AL_PI = 3.14159265358979f;
 const float AL_TWO_PI = 6.28318530717959f;
 
-// One case, normalized on the host (CONTRACT.md 1): p moved to the origin and
-// lengths divided by the light's distance; n and v unit. center = the light's
-// centre; verts = polygon vertices relative to it (offsets keep their own
-// relative precision, so small distant polygons keep accurate edges).
-// params = (exponent or alpha, two_sided, vertex count, 0). 192 bytes, std430.
+// One case, normalized on the host (CONTRACT.md 1), in double precision: p moved
+// to the origin, lengths divided by the light's distance, and the frame rotated
+// so that the light's centre lies on +z. Near the light, directions then differ
+// from the pole in small components that fp32 holds to full relative precision
+// (in a world frame the edges' distances to r would carry 6e-8 absolute error).
+// n, v unit; r = 2 (n.v) n - v formed on the host for the same reason. verts =
+// polygon vertices relative to the centre. params = (exponent or alpha,
+// two_sided, vertex count, 0). 208 bytes, std430.
 struct AlCase {
     vec4 n;
     vec4 v;
+    vec4 r;
     vec4 params;
     vec4 center;
     vec4 verts[8];
@@ -97,12 +101,9 @@ float al_expm1(float z) {
 // (CONTRACT.md 2 asks for finite values >= 0 everywhere).
 float al_clean(float x) { return (x >= 0.0f && x <= 3.0e38f) ? x : 0.0f; }
 vec4 al_clean(vec4 x) { return vec4(al_clean(x.x), al_clean(x.y), al_clean(x.z), al_clean(x.w)); }
-#line 101 "arealight-generated"
+#line 105 "arealight-generated"
 #line 1 "templates/dist_phong.glsl"
 // Energy-conserving Phong, CONTRACT.md 2: f = (N+2)/(2 pi) (r.w)_+^N.
-
-// Mirror direction r = 2 (n.v) n - v for unit n, v.
-vec3 al_mirror(vec3 n, vec3 v) { return 2.0f * dot(n, v) * n - v; }
 
 // (r.w)_+^N for unit r, w and N in [1, 1e5]. Relative error ~N ulp of log(r.w),
 // from 1 - r.w = |r - w|^2 / 2 (no cancellation) and log1p.
@@ -117,7 +118,7 @@ float al_phong_power(vec3 r, vec3 w, float N) {
 float al_phong_brdf(vec3 r, vec3 w, float N) {
     return (N + 2.0f) / AL_TWO_PI * al_phong_power(r, w, N);
 }
-#line 121 "arealight-generated"
+#line 122 "arealight-generated"
 #line 1 "templates/light_polygon.glsl"
 // Polygon lights (CONTRACT.md 1): orientation, sidedness, exact horizon clipping
 // and the shading driver of each method.
@@ -217,7 +218,7 @@ AlPoly al_polygon_directions(AlCase c, float side) {
 // Baseline: the polygon's centre as a point light of the same power, solid angle
 // ~ area cos(theta_l) / d^2. Error grows with the light's angular size; O(1), cheapest.
 vec4 al_shade(AlCase c) {
-    vec3 n = vec3(c.n), v = vec3(c.v);
+    vec3 n = vec3(c.n);
     float side = al_polygon_side(c);
     if (side == 0.0f) return vec4(0.0f);
     int count = int(c.params.z);
@@ -233,7 +234,7 @@ vec4 al_shade(AlCase c) {
     float solid_angle = abs(dot(area2, w)) * 0.5f / d2;
     float nw = max(dot(n, w), 0.0f);
     float N = c.params.x;
-    float spec = al_phong_brdf(al_mirror(n, v), w, N) * nw * solid_angle;
+    float spec = al_phong_brdf(vec3(c.r), w, N) * nw * solid_angle;
     return vec4(nw / AL_PI * solid_angle, spec, 0.0f, 0.0f);
 }
 #endif
@@ -243,28 +244,39 @@ vec4 al_shade(AlCase c) {
 // of n (diffuse), then by r's hemisphere ((r.w)_+ vanishes beyond), and sum the
 // boundary integrals of method_exact_phong.glsl.
 vec4 al_shade(AlCase c) {
-    vec3 n = vec3(c.n), v = vec3(c.v);
+    vec3 n = vec3(c.n);
     float side = al_polygon_side(c);
     if (side == 0.0f) return vec4(0.0f);
     float N = c.params.x;
-    vec3 r = al_mirror(n, v);
+    vec3 r = vec3(c.r);
     AlPoly lit = al_clip(al_polygon_directions(c, side), n);
     float diffuse = al_polygon_diffuse(lit, n);
     AlPoly D = al_clip(lit, r);
     vec3 sums = vec3(0.0f);
     bool inside = D.count >= 3;
+    float sweep_near = 0.0f, sweep_far = 0.0f, size_near = 0.0f, size_far = 0.0f;
     for (int i = 0; i < AL_POLY_CAP; ++i) {
         if (i >= D.count) break;
         inside = inside && dot(D.m[i], r) >= 0.0f;
-        sums += al_phong_edge(D.v[i], D.v[i + 1 < D.count ? i + 1 : 0], D.m[i], r, n, N);
+        AlPhongEdge e = al_phong_edge(D.v[i], D.v[i + 1 < D.count ? i + 1 : 0], D.m[i], r, n, N);
+        sums += e.sums;
+        if (e.near_edge) {
+            sweep_near += e.sweep;
+            size_near += abs(e.sweep);
+        } else {
+            sweep_far += e.sweep;
+            size_far += abs(e.sweep);
+        }
     }
-    float winding = inside ? AL_TWO_PI : 0.0f;
+    // 2 pi [r in D] - sum over near arcs of their sweep equals the far arcs' sweep:
+    // take whichever group cancels less.
+    float winding = size_near <= size_far ? (inside ? AL_TWO_PI : 0.0f) - sweep_near : sweep_far;
     float moment = (winding - sums.x) / AL_TWO_PI;
     float specular = (dot(r, n) * (winding - sums.y) + sums.z) / AL_TWO_PI;
     return vec4(diffuse, specular, moment, 0.0f);
 }
 #endif
-#line 268 "arealight-generated"
+#line 280 "arealight-generated"
 #line 1 "templates/entry.glsl"
 // Compute entry point (GLSL only): one invocation per case, the VulkanRunner
 // contract (runtime/vulkan_runner.hpp): binding 0 cases, binding 1 results,
@@ -284,4 +296,4 @@ void main() {
     if (i >= al_push.count) return;
     al_results[i] = al_clean(al_shade(al_cases[i]));
 }
-#line 288 "arealight-generated"
+#line 300 "arealight-generated"
