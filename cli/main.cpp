@@ -17,6 +17,7 @@
 #include "arealight/evaluator.hpp"
 #include "arealight/generator.hpp"
 #include "arealight/reference.hpp"
+#include "arealight/score.hpp"
 #include "summary.hpp"
 
 namespace {
@@ -120,6 +121,15 @@ int run_generate(const std::string& variant_name, const std::string& glsl_path,
     return kOk;
 }
 
+int run_compare(const std::string& ref_path, const std::string& out_path, double floor) {
+    auto ref = arealight::read_results(ref_path, print_diagnostic);
+    auto out = arealight::read_results(out_path, print_diagnostic);
+    if (!ref || !out) return kBadInput;
+    fmt::print("{} ({}) against {}\n", out_path, out->variant, ref_path);
+    fmt::print("{}", arealight::format_scores(arealight::score_results(*ref, *out, floor)));
+    return kOk;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -167,6 +177,15 @@ int main(int argc, char** argv) {
     bool table = false;
     reference->add_flag("--table", table, "print every case's values on stdout");
 
+    std::string ref_path;
+    double floor = 1e-3;
+    auto* compare = app.add_subcommand(
+        "compare", "Error table of a results file against a reference (shared/tools/score metric)");
+    compare->add_option("--ref", ref_path, "reference results file")->required();
+    compare->add_option("--out", out_path, "results file to judge")->required();
+    compare->add_option("--floor", floor, "absolute floor of the relative error")
+        ->capture_default_str();
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -181,6 +200,7 @@ int main(int argc, char** argv) {
     if (variants->parsed()) return run_variants();
     if (eval->parsed()) return run_eval(cases_path, variant, backend, device, out_path);
     if (generate->parsed()) return run_generate(variant, glsl_path, spv_path, no_opt);
+    if (compare->parsed()) return run_compare(ref_path, out_path, floor);
     if (reference->parsed()) return run_reference(cases_path, out_path, rel_tol, threads, table);
     return kUsage;
 }

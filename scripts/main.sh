@@ -1,9 +1,18 @@
 #!/usr/bin/env bash
-# Sets up the machine, builds, and runs the main job: the reference oracle over
-# the example cases, with a summary table.
+# Sets up the machine, builds, and runs the main job on the example cases: the
+# oracle, then the exact Phong polygon variant generated, compiled, validated and
+# run on lavapipe and on the CPU mirror, each with its error table.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 bash scripts/build.sh
 mkdir -p out
-build/arealight reference --cases examples/cases.json --out out/examples.ref.json --table
+al=build/arealight
+variant="dist=phong,method=exact,light=polygon"
+$al reference --cases examples/cases.json --out out/examples.ref.json --table
+$al generate --variant "$variant" --glsl out/phong_exact_polygon.comp --spv out/phong_exact_polygon.spv
+for backend in vulkan cpu; do
+  $al eval --cases examples/cases.json --variant "$variant" --backend $backend \
+    --out "out/examples.$backend.json"
+  $al compare --ref out/examples.ref.json --out "out/examples.$backend.json"
+done

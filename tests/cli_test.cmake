@@ -36,7 +36,7 @@ expect_exit(1 "${AREALIGHT}" reference --cases "${WORK}/no-such-file.json" --out
 expect_exit(2 "${AREALIGHT}")
 expect_exit(2 "${AREALIGHT}" reference --cases x.json)
 expect_exit(2 "${AREALIGHT}" frobnicate)
-foreach(cmd variants eval reference)
+foreach(cmd variants eval reference generate compare)
   expect_exit(0 "${AREALIGHT}" ${cmd} --help)
   if(NOT LAST_OUT MATCHES "--")
     message(FATAL_ERROR "${cmd} --help printed no options: ${LAST_OUT}")
@@ -52,3 +52,19 @@ foreach(key "\"format\": \"arealight-results/1\"" "\"diffuse\"" "\"specular\"" "
     message(FATAL_ERROR "results file lacks ${key}")
   endif()
 endforeach()
+
+# An unknown variant is bad input and writes nothing.
+expect_exit(1 "${AREALIGHT}" eval --cases "${SOURCE}/../examples/cases.json" --variant dist=phong,method=magic,light=polygon --out "${WORK}/eval.json")
+if(NOT LAST_ERR MATCHES "key 'method': unknown value 'magic'")
+  message(FATAL_ERROR "unknown variant message does not name the key: ${LAST_ERR}")
+endif()
+if(EXISTS "${WORK}/eval.json")
+  message(FATAL_ERROR "eval wrote output for an unknown variant")
+endif()
+
+# The CPU mirror runs a variant on the cases it applies to, and compare scores it.
+expect_exit(0 "${AREALIGHT}" eval --cases "${SOURCE}/../examples/cases.json" --variant dist=phong,method=exact,light=polygon --backend cpu --out "${WORK}/eval.json")
+expect_exit(0 "${AREALIGHT}" compare --ref "${WORK}/ref.json" --out "${WORK}/eval.json")
+if(NOT LAST_OUT MATCHES "moment")
+  message(FATAL_ERROR "compare printed no moment row: ${LAST_OUT}")
+endif()
