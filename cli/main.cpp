@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "arealight/atomic_file.hpp"
+#include "arealight/benchmark.hpp"
 #include "arealight/case_io.hpp"
 #include "arealight/compiler.hpp"
 #include "arealight/evaluator.hpp"
@@ -36,24 +37,24 @@ void print_diagnostic(const arealight::Diagnostic& d) {
 // Reports progress on stderr once a run has taken more than a second.
 class ProgressPrinter {
   public:
-    explicit ProgressPrinter(std::string what)
-        : what_(std::move(what)), start_(std::chrono::steady_clock::now()) {}
+    ProgressPrinter(std::string what, std::string unit)
+        : what_(std::move(what)),
+          unit_(std::move(unit)),
+          start_(std::chrono::steady_clock::now()) {}
     void operator()(std::size_t done, std::size_t total) {
         const auto now = std::chrono::steady_clock::now();
         const double elapsed = std::chrono::duration<double>(now - start_).count();
         if (elapsed < 1.0 || (done != total && now - last_ < std::chrono::milliseconds(250)))
             return;
         last_ = now;
-        shown_ = true;
-        fmt::print(stderr, "\r{}: {}/{} cases, {:.1f} s", what_, done, total, elapsed);
+        fmt::print(stderr, "\r{}: {}/{} {}, {:.1f} s", what_, done, total, unit_, elapsed);
         if (done == total) fmt::print(stderr, "\n");
         std::fflush(stderr);
     }
 
   private:
-    std::string what_;
+    std::string what_, unit_;
     std::chrono::steady_clock::time_point start_, last_{};
-    bool shown_ = false;
 };
 
 int run_reference(const std::string& cases_path, const std::string& out_path, double rel_tol,
@@ -63,7 +64,7 @@ int run_reference(const std::string& cases_path, const std::string& out_path, do
     arealight::ReferenceOptions opt;
     opt.rel_tol = rel_tol;
     opt.threads = threads;
-    ProgressPrinter progress("reference");
+    ProgressPrinter progress("reference", "cases");
     const auto start = std::chrono::steady_clock::now();
     const auto results = arealight::reference_all(
         *cases, opt, [&](std::size_t d, std::size_t t) { progress(d, t); });
@@ -130,6 +131,32 @@ int run_compare(const std::string& ref_path, const std::string& out_path, double
     return kOk;
 }
 
+int run_bench(const std::string& cases_path, const std::vector<std::string>& names,
+              const std::vector<double>& exponents, const std::string& backend,
+              std::size_t min_cases, int repeats) {
+    arealight::BenchOptions opt;
+    for (const auto& name : names) {
+        auto v = arealight::parse_variant(name, print_diagnostic);
+        if (!v) return kBadInput;
+        opt.variants.push_back(*v);
+    }
+    auto cases = arealight::read_cases(cases_path, print_diagnostic);
+    if (!cases) return kBadInput;
+    opt.exponents = exponents;
+    opt.min_cases = min_cases;
+    opt.repeats = repeats;
+    arealight::EvalOptions eo;
+    eo.backend = backend == "cpu" ? arealight::Backend::Cpu : arealight::Backend::Vulkan;
+    auto ev = arealight::Evaluator::create(eo, print_diagnostic);
+    if (!ev) return kRuntime;
+    ProgressPrinter progress("bench", "timed runs");
+    auto rows = arealight::benchmark(*ev, *cases, opt, print_diagnostic,
+                                     [&](std::size_t d, std::size_t t) { progress(d, t); });
+    if (!rows) return kRuntime;
+    fmt::print("{}", arealight::format_bench(*rows));
+    return kOk;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -186,6 +213,26 @@ int main(int argc, char** argv) {
     compare->add_option("--floor", floor, "absolute floor of the relative error")
         ->capture_default_str();
 
+    std::vector<std::string> bench_variants;
+    std::vector<double> exponents;
+    std::size_t min_cases = 1 << 16;
+    int repeats = 9;
+    auto* bench = app.add_subcommand(
+        "bench", "Time variants side by side (median of interleaved repeats, ratio to the first)");
+    bench->add_option("--cases", cases_path, "arealight-cases/1 file")->required();
+    bench
+        ->add_option("--variant", bench_variants, "variant (repeatable); the first is the baseline")
+        ->required();
+    bench->add_option("--exponent", exponents, "override the exponent of every case (repeatable)");
+    bench->add_option("--backend", backend, "cpu or vulkan")
+        ->check(CLI::IsMember({"cpu", "vulkan"}))
+        ->capture_default_str();
+    bench->add_option("--min-cases", min_cases, "cases per dispatch (repeating the file)")
+        ->capture_default_str();
+    bench->add_option("--repeat", repeats, "timed runs per variant")
+        ->check(CLI::Range(1, 1000))
+        ->capture_default_str();
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -200,6 +247,8 @@ int main(int argc, char** argv) {
     if (variants->parsed()) return run_variants();
     if (eval->parsed()) return run_eval(cases_path, variant, backend, device, out_path);
     if (generate->parsed()) return run_generate(variant, glsl_path, spv_path, no_opt);
+    if (bench->parsed())
+        return run_bench(cases_path, bench_variants, exponents, backend, min_cases, repeats);
     if (compare->parsed()) return run_compare(ref_path, out_path, floor);
     if (reference->parsed()) return run_reference(cases_path, out_path, rel_tol, threads, table);
     return kUsage;

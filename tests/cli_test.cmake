@@ -36,7 +36,7 @@ expect_exit(1 "${AREALIGHT}" reference --cases "${WORK}/no-such-file.json" --out
 expect_exit(2 "${AREALIGHT}")
 expect_exit(2 "${AREALIGHT}" reference --cases x.json)
 expect_exit(2 "${AREALIGHT}" frobnicate)
-foreach(cmd variants eval reference generate compare)
+foreach(cmd variants eval reference generate compare bench)
   expect_exit(0 "${AREALIGHT}" ${cmd} --help)
   if(NOT LAST_OUT MATCHES "--")
     message(FATAL_ERROR "${cmd} --help printed no options: ${LAST_OUT}")

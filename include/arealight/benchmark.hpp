@@ -1,0 +1,36 @@
+// Side-by-side timing of variants on one case set: medians over interleaved
+// repeats, each variant against a baseline measured in the same run.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "arealight/evaluator.hpp"
+
+namespace arealight {
+
+struct BenchOptions {
+    std::vector<Variant> variants;    // the first is the baseline
+    std::vector<double> exponents;    // overrides the cases' exponent; empty keeps them
+    std::size_t min_cases = 1 << 16;  // cases are repeated up to this count per dispatch
+    int repeats = 9;
+};
+
+struct BenchRow {
+    std::string variant;
+    double exponent = 0;            // 0 when the cases kept their own
+    std::size_t cases = 0;          // cases per dispatch
+    double median_ns_per_case = 0;  // backend time (Vulkan: submit + wait)
+    double ratio = 0;               // median / baseline median at the same exponent
+};
+
+// nullopt (with a diagnostic) when a variant fails to build or run.
+std::optional<std::vector<BenchRow>> benchmark(Evaluator& ev, const CaseSet& cases,
+                                               const BenchOptions& opt,
+                                               const DiagnosticConsumer& diag,
+                                               const ProgressConsumer& progress = {});
+
+std::string format_bench(const std::vector<BenchRow>& rows);
+
+}  // namespace arealight

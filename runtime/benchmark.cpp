@@ -1,0 +1,79 @@
+#include "arealight/benchmark.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace arealight {
+
+std::optional<std::vector<BenchRow>> benchmark(Evaluator& ev, const CaseSet& cases,
+                                               const BenchOptions& opt,
+                                               const DiagnosticConsumer& diag,
+                                               const ProgressConsumer& progress) {
+    std::vector<BenchRow> rows;
+    std::vector<double> exponents = opt.exponents;
+    if (exponents.empty()) exponents.push_back(0.0);
+    const std::size_t total = exponents.size() * opt.variants.size() * opt.repeats;
+    std::size_t done = 0;
+    for (double N : exponents) {
+        CaseSet set = cases;
+        if (N > 0)
+            for (auto& c : set.cases) c.material.exponent = N;
+        // One packing per variant, repeated up to min_cases so that a dispatch
+        // is long enough to time.
+        std::vector<std::vector<float>> packed(opt.variants.size());
+        std::vector<std::size_t> counts(opt.variants.size());
+        for (std::size_t k = 0; k < opt.variants.size(); ++k) {
+            std::vector<const Case*> todo;
+            for (const auto& c : set.cases)
+                if (case_applies(opt.variants[k], c)) todo.push_back(&c);
+            if (todo.empty()) {
+                if (diag)
+                    diag({Severity::Error, "", 0,
+                          "benchmark: no case applies to " + canonical_name(opt.variants[k])});
+                return std::nullopt;
+            }
+            std::vector<const Case*> reps;
+            while (reps.size() < opt.min_cases) reps.insert(reps.end(), todo.begin(), todo.end());
+            packed[k] = pack_cases(reps);
+            counts[k] = reps.size();
+        }
+        // Interleaved repeats: drift and noise from other load hit every variant alike.
+        std::vector<std::vector<double>> times(opt.variants.size());
+        std::vector<float> out;
+        for (int rep = 0; rep < opt.repeats; ++rep) {
+            for (std::size_t k = 0; k < opt.variants.size(); ++k) {
+                double s = 0;
+                if (!ev.run_packed(opt.variants[k], packed[k], counts[k], out, diag, &s))
+                    return std::nullopt;
+                times[k].push_back(s / counts[k] * 1e9);
+                if (progress) progress(++done, total);
+            }
+        }
+        std::vector<double> medians;
+        for (auto& t : times) {
+            std::sort(t.begin(), t.end());
+            medians.push_back(t[t.size() / 2]);
+        }
+        for (std::size_t k = 0; k < opt.variants.size(); ++k) {
+            rows.push_back({canonical_name(opt.variants[k]), N, counts[k], medians[k],
+                            medians[k] / medians[0]});
+        }
+    }
+    return rows;
+}
+
+std::string format_bench(const std::vector<BenchRow>& rows) {
+    std::size_t w = 7;
+    for (const auto& r : rows) w = std::max(w, r.variant.size());
+    std::string t = fmt::format("{:<{}} {:>9} {:>8} {:>12} {:>9}\n", "variant", w, "exponent",
+                                "cases", "ns/case", "x base");
+    for (const auto& r : rows) {
+        t += fmt::format("{:<{}} {:>9} {:>8} {:>12.1f} {:>9.2f}\n", r.variant, w,
+                         r.exponent > 0 ? fmt::format("{:g}", r.exponent) : "case", r.cases,
+                         r.median_ns_per_case, r.ratio);
+    }
+    return t;
+}
+
+}  // namespace arealight
