@@ -17,6 +17,7 @@
 #include "arealight/compiler.hpp"
 #include "arealight/evaluator.hpp"
 #include "arealight/generator.hpp"
+#include "arealight/machine_code.hpp"
 #include "arealight/reference.hpp"
 #include "arealight/score.hpp"
 #include "summary.hpp"
@@ -145,6 +146,8 @@ int run_bench(const std::string& cases_path, const std::vector<std::string>& nam
     opt.exponents = exponents;
     opt.min_cases = min_cases;
     opt.repeats = repeats;
+    // Before any Vulkan call: Mesa reads its cache location once per process.
+    if (backend == "vulkan") opt.shader_cache_dir = arealight::use_private_shader_cache();
     arealight::EvalOptions eo;
     eo.backend = backend == "cpu" ? arealight::Backend::Cpu : arealight::Backend::Vulkan;
     auto ev = arealight::Evaluator::create(eo, print_diagnostic);

@@ -4,6 +4,9 @@
 
 #include <algorithm>
 
+#include "arealight/compiler.hpp"
+#include "arealight/machine_code.hpp"
+
 namespace arealight {
 
 std::optional<std::vector<BenchRow>> benchmark(Evaluator& ev, const CaseSet& cases,
@@ -11,6 +14,19 @@ std::optional<std::vector<BenchRow>> benchmark(Evaluator& ev, const CaseSet& cas
                                                const DiagnosticConsumer& diag,
                                                const ProgressConsumer& progress) {
     std::vector<BenchRow> rows;
+    // Instruction counts are deterministic: one measurement per variant.
+    std::vector<std::size_t> spirv_counts(opt.variants.size(), 0),
+        x86_counts(opt.variants.size(), 0);
+    if (!opt.shader_cache_dir.empty()) {
+        for (std::size_t k = 0; k < opt.variants.size(); ++k) {
+            auto words = build_spirv(opt.variants[k], true, diag);
+            if (!words) return std::nullopt;
+            spirv_counts[k] = spirv_instruction_count(*words);
+            auto code = lavapipe_machine_code(opt.variants[k], opt.shader_cache_dir, diag);
+            if (!code) return std::nullopt;
+            x86_counts[k] = code->instructions;
+        }
+    }
     std::vector<double> exponents = opt.exponents;
     if (exponents.empty()) exponents.push_back(0.0);
     const std::size_t total = exponents.size() * opt.variants.size() * opt.repeats;
@@ -57,7 +73,7 @@ std::optional<std::vector<BenchRow>> benchmark(Evaluator& ev, const CaseSet& cas
         }
         for (std::size_t k = 0; k < opt.variants.size(); ++k) {
             rows.push_back({canonical_name(opt.variants[k]), N, counts[k], medians[k],
-                            medians[k] / medians[0]});
+                            medians[k] / medians[0], spirv_counts[k], x86_counts[k]});
         }
     }
     return rows;
@@ -66,12 +82,12 @@ std::optional<std::vector<BenchRow>> benchmark(Evaluator& ev, const CaseSet& cas
 std::string format_bench(const std::vector<BenchRow>& rows) {
     std::size_t w = 7;
     for (const auto& r : rows) w = std::max(w, r.variant.size());
-    std::string t = fmt::format("{:<{}} {:>9} {:>8} {:>12} {:>9}\n", "variant", w, "exponent",
-                                "cases", "ns/case", "x base");
+    std::string t = fmt::format("{:<{}} {:>9} {:>8} {:>12} {:>9} {:>8} {:>8}\n", "variant", w,
+                                "exponent", "cases", "ns/case", "x base", "SPIR-V", "x86-64");
     for (const auto& r : rows) {
-        t += fmt::format("{:<{}} {:>9} {:>8} {:>12.1f} {:>9.2f}\n", r.variant, w,
+        t += fmt::format("{:<{}} {:>9} {:>8} {:>12.1f} {:>9.2f} {:>8} {:>8}\n", r.variant, w,
                          r.exponent > 0 ? fmt::format("{:g}", r.exponent) : "case", r.cases,
-                         r.median_ns_per_case, r.ratio);
+                         r.median_ns_per_case, r.ratio, r.spirv_instructions, r.x86_instructions);
     }
     return t;
 }

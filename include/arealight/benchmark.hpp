@@ -15,14 +15,19 @@ struct BenchOptions {
     std::vector<double> exponents;    // overrides the cases' exponent; empty keeps them
     std::size_t min_cases = 1 << 16;  // cases are repeated up to this count per dispatch
     int repeats = 9;
+    // When set, SPIR-V and lavapipe x86-64 instruction counts are taken; the folder
+    // must be MESA_SHADER_CACHE_DIR (see use_private_shader_cache).
+    std::string shader_cache_dir;
 };
 
 struct BenchRow {
     std::string variant;
-    double exponent = 0;            // 0 when the cases kept their own
-    std::size_t cases = 0;          // cases per dispatch
-    double median_ns_per_case = 0;  // backend time (Vulkan: submit + wait)
-    double ratio = 0;               // median / baseline median at the same exponent
+    double exponent = 0;                 // 0 when the cases kept their own
+    std::size_t cases = 0;               // cases per dispatch
+    double median_ns_per_case = 0;       // backend time (Vulkan: submit + wait)
+    double ratio = 0;                    // median / baseline median at the same exponent
+    std::size_t spirv_instructions = 0;  // after optimization; 0 when not counted
+    std::size_t x86_instructions = 0;    // lavapipe's JIT code; 0 when not counted
 };
 
 // nullopt (with a diagnostic) when a variant fails to build or run.
