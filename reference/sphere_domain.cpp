@@ -13,8 +13,6 @@ constexpr double kPi = 3.14159265358979323846;
 // q(t) = tan^2 (w.k)^2 - |w_perp|^2 = H0 + Hc cos 2t + Hs sin 2t (> 0 inside).
 struct ConeTrig {
     double H0, Hc, Hs;
-    double at(double t) const { return H0 + Hc * std::cos(2 * t) + Hs * std::sin(2 * t); }
-    double slope(double t) const { return 2 * (Hs * std::cos(2 * t) - Hc * std::sin(2 * t)); }
 };
 
 ConeTrig cone_trig(const EllipticCone& c, const Vec3& a, const Vec3& e) {

@@ -62,10 +62,6 @@ float al_log(float x) {
     return float(e) * 0.69314718f + s;
 }
 
-// Angle between unit vectors a and b, in [0, pi]: atan2 form, exact to rounding
-// for all angles (acos loses half the digits near 0 and pi).
-float al_angle(vec3 a, vec3 b) { return al_atan2(length(cross(a, b)), dot(a, b)); }
-
 // log(1 + z) for z in (-1, inf). Relative error ~1 ulp; for |z| < 1/4 the series
 // 2 atanh(z / (2 + z)) (5 terms, truncation < 3e-9 relative) avoids log(1 + z)'s cancellation.
 float al_log1p(float z) {

@@ -72,10 +72,6 @@ float al_log(float x) {
     return float(e) * 0.69314718f + s;
 }
 
-// Angle between unit vectors a and b, in [0, pi]: atan2 form, exact to rounding
-// for all angles (acos loses half the digits near 0 and pi).
-float al_angle(vec3 a, vec3 b) { return al_atan2(length(cross(a, b)), dot(a, b)); }
-
 // log(1 + z) for z in (-1, inf). Relative error ~1 ulp; for |z| < 1/4 the series
 // 2 atanh(z / (2 + z)) (5 terms, truncation < 3e-9 relative) avoids log(1 + z)'s cancellation.
 float al_log1p(float z) {
@@ -101,7 +97,7 @@ float al_expm1(float z) {
 // (CONTRACT.md 2 asks for finite values >= 0 everywhere).
 float al_clean(float x) { return (x >= 0.0f && x <= 3.0e38f) ? x : 0.0f; }
 vec4 al_clean(vec4 x) { return vec4(al_clean(x.x), al_clean(x.y), al_clean(x.z), al_clean(x.w)); }
-#line 105 "arealight-generated"
+#line 101 "arealight-generated"
 #line 1 "templates/dist_phong.glsl"
 // Energy-conserving Phong, CONTRACT.md 2: f = (N+2)/(2 pi) (r.w)_+^N.
 
@@ -118,7 +114,7 @@ float al_phong_power(vec3 r, vec3 w, float N) {
 float al_phong_brdf(vec3 r, vec3 w, float N) {
     return (N + 2.0f) / AL_TWO_PI * al_phong_power(r, w, N);
 }
-#line 122 "arealight-generated"
+#line 118 "arealight-generated"
 #line 1 "templates/light_polygon.glsl"
 // Polygon lights (CONTRACT.md 1): orientation, sidedness, exact horizon clipping
 // and the shading driver of each method.
@@ -276,7 +272,7 @@ vec4 al_shade(AlCase c) {
     return vec4(diffuse, specular, moment, 0.0f);
 }
 #endif
-#line 280 "arealight-generated"
+#line 276 "arealight-generated"
 #line 1 "templates/entry.glsl"
 // Compute entry point (GLSL only): one invocation per case, the VulkanRunner
 // contract (runtime/vulkan_runner.hpp): binding 0 cases, binding 1 results,
@@ -296,4 +292,4 @@ void main() {
     if (i >= al_push.count) return;
     al_results[i] = al_clean(al_shade(al_cases[i]));
 }
-#line 300 "arealight-generated"
+#line 296 "arealight-generated"
