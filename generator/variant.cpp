@@ -1,8 +1,11 @@
 #include "arealight/variant.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
+#include <cctype>
+#include <iterator>
 #include <map>
 
 namespace arealight {
@@ -15,6 +18,8 @@ const LightType kLights[] = {LightType::Polygon, LightType::Disk, LightType::Sph
                              LightType::Ellipsoid};
 const Sided kSided[] = {Sided::Any, Sided::One, Sided::Two};
 const int kNodes[] = {8, 12, 16, 24};
+const int kMinVerts = 3;
+const int kMaxVerts = 8;  // the templates size their per-vertex arrays by AL_MAX_VERTS
 
 // The (dist, method, light) families with an implementation. Adding a method is
 // a template plus a row here.
@@ -39,6 +44,12 @@ bool uses_verts(const Variant& v) {
 bool uses_nodes(const Variant& v) {
     return v.method == Method::Exact;
 }
+bool verts_in_range(int n) {
+    return n >= kMinVerts && n <= kMaxVerts;
+}
+bool known_nodes(int n) {
+    return std::find(std::begin(kNodes), std::end(kNodes), n) != std::end(kNodes);
+}
 
 template <class T, std::size_t N>
 std::string choices(const T (&values)[N]) {
@@ -54,8 +65,16 @@ std::optional<T> lookup(const T (&values)[N], const std::string& name) {
     return std::nullopt;
 }
 
+bool is_digit(char c) {
+    return std::isdigit(static_cast<unsigned char>(c)) != 0;
+}
+bool is_space(char c) {
+    return std::isspace(static_cast<unsigned char>(c)) != 0;
+}
+
+// The length cap keeps std::stoi clear of overflow; no valid value has more digits.
 std::optional<int> parse_int(const std::string& s) {
-    if (s.empty() || s.size() > 3 || !std::all_of(s.begin(), s.end(), ::isdigit))
+    if (s.empty() || s.size() > 3 || !std::all_of(s.begin(), s.end(), is_digit))
         return std::nullopt;
     return std::stoi(s);
 }
@@ -71,8 +90,8 @@ std::optional<std::vector<std::pair<std::string, std::string>>> split(const std:
         const std::string item = name.substr(start, comma - start);
         const std::size_t eq = item.find('=');
         if (eq == std::string::npos || eq == 0 || eq + 1 == item.size() ||
-            item.find_first_of(" \t=", eq + 1) != std::string::npos ||
-            item.find_first_of(" \t") != std::string::npos) {
+            item.find('=', eq + 1) != std::string::npos ||
+            std::any_of(item.begin(), item.end(), is_space)) {
             why = fmt::format("'{}' is not key=value", item);
             return std::nullopt;
         }
@@ -133,14 +152,20 @@ std::optional<Variant> parse_variant(const std::string& name, const DiagnosticCo
             v.sided = *s;
         } else if (key == "verts") {
             auto n = parse_int(value);
-            if (!n || *n < 3 || *n > 8)
-                return fail(fmt::format("key 'verts': value '{}' out of range 3..8", value));
+            if (!n) {
+                return fail(fmt::format("key 'verts': value '{}' is not an integer in {}..{}",
+                                        value, kMinVerts, kMaxVerts));
+            }
+            if (!verts_in_range(*n)) {
+                return fail(fmt::format("key 'verts': value '{}' out of range {}..{}", value,
+                                        kMinVerts, kMaxVerts));
+            }
             v.verts = *n;
         } else if (key == "nodes") {
             auto n = parse_int(value);
-            if (!n || std::find(std::begin(kNodes), std::end(kNodes), *n) == std::end(kNodes))
-                return fail(
-                    fmt::format("key 'nodes': value '{}' is not one of 8, 12, 16, 24", value));
+            if (!n || !known_nodes(*n))
+                return fail(fmt::format("key 'nodes': value '{}' is not one of {}", value,
+                                        fmt::join(kNodes, ", ")));
             v.nodes = *n;
         } else {
             return fail(fmt::format(
@@ -161,6 +186,15 @@ std::optional<Variant> parse_variant(const std::string& name, const DiagnosticCo
     return v;
 }
 
+bool is_valid(const Variant& v) {
+    const Variant d;
+    const bool sided_ok =
+        std::find(std::begin(kSided), std::end(kSided), v.sided) != std::end(kSided);
+    const bool verts_ok = uses_verts(v) ? verts_in_range(v.verts) : v.verts == d.verts;
+    const bool nodes_ok = uses_nodes(v) ? known_nodes(v.nodes) : v.nodes == d.nodes;
+    return has_family(v) && sided_ok && verts_ok && nodes_ok;
+}
+
 std::string canonical_name(const Variant& v) {
     const Variant d;
     std::string s = fmt::format("dist={},method={},light={}", to_string(v.dist),
@@ -179,8 +213,8 @@ std::vector<Variant> enumerate_variants() {
         base.method = f.method;
         base.light = f.light;
         for (Sided s : kSided) {
-            for (int verts = 3; verts <= 8; ++verts) {
-                if (!uses_verts(base) && verts != 3) continue;
+            for (int verts = kMinVerts; verts <= kMaxVerts; ++verts) {
+                if (!uses_verts(base) && verts != kMinVerts) continue;
                 for (int nodes : kNodes) {
                     if (!uses_nodes(base) && nodes != kNodes[0]) continue;
                     Variant v = base;
@@ -198,7 +232,7 @@ std::vector<Variant> enumerate_variants() {
 std::vector<std::pair<std::string, std::string>> variant_defines(const Variant& v) {
     std::vector<std::pair<std::string, std::string>> d;
     auto upper = [](std::string s) {
-        for (auto& ch : s) ch = static_cast<char>(::toupper(ch));
+        for (auto& ch : s) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
         return s;
     };
     d.emplace_back("AL_DIST_" + upper(to_string(v.dist)), "1");
@@ -224,12 +258,12 @@ bool variant_matches(const Variant& v, const std::string& pattern) {
             actual = to_string(v.light);
         else if (key == "sided")
             actual = to_string(v.sided);
-        else if (key == "verts")
+        else if (key == "verts" && uses_verts(v))
             actual = std::to_string(v.verts);
-        else if (key == "nodes")
+        else if (key == "nodes" && uses_nodes(v))
             actual = std::to_string(v.nodes);
         else
-            return false;
+            return false;  // unknown, or a key this variant has no value for
         if (actual != value) return false;
     }
     return true;

@@ -1,16 +1,15 @@
-// arealight-cases/1 reader with full validation, arealight-results/1 writer.
+// arealight-cases/1 reader with full validation, arealight-results/1 writer and reader.
 #include "arealight/case_io.hpp"
 
+#include <fcntl.h>
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <cmath>
 #include <cstring>
-#include <fstream>
-#include <limits>
 #include <nlohmann/json.hpp>
 #include <set>
-#include <sstream>
 
 #include "arealight/atomic_file.hpp"
 
@@ -18,9 +17,14 @@ namespace arealight {
 namespace {
 
 using json = nlohmann::json;
+// Output keeps insertion order so that files read in the order CONTRACT.md shows.
+using ordered_json = nlohmann::ordered_json;
 
-// Coordinates beyond this would overflow the products the shaders form.
+// Coordinates beyond this would overflow the products the shaders and the oracle form.
 constexpr double kMaxCoordinate = 1e15;
+// Relative tolerance of the disk and ellipsoid orthogonality checks.
+constexpr double kOrthogonalRel = 1e-6;
+constexpr double kPi = 3.14159265358979323846;
 
 Vec3 sub(const Vec3& a, const Vec3& b) {
     return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
@@ -35,6 +39,49 @@ double norm(const Vec3& a) {
     return std::sqrt(dot(a, a));
 }
 
+void report(const DiagnosticConsumer& diag, const std::string& file, const std::string& message) {
+    if (diag) diag({Severity::Error, file, 0, file + ": " + message});
+}
+
+// The whole file, or nullopt after "FILE: cannot read: REASON". POSIX calls rather than
+// iostreams, because only they give a reliable errno (a folder opens as a stream, then reads
+// as empty and would be misreported as invalid JSON).
+std::optional<std::string> read_text(const std::string& path, const DiagnosticConsumer& diag) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) {
+        report(diag, path, std::string("cannot read: ") + std::strerror(errno));
+        return std::nullopt;
+    }
+    std::string text;
+    char buf[1 << 16];
+    for (;;) {
+        const ssize_t n = ::read(fd, buf, sizeof buf);
+        if (n == 0) break;
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            const int err = errno;
+            ::close(fd);
+            report(diag, path, std::string("cannot read: ") + std::strerror(err));
+            return std::nullopt;
+        }
+        text.append(buf, static_cast<std::size_t>(n));
+    }
+    ::close(fd);
+    return text;
+}
+
+// nlohmann reports a number beyond the double range as out_of_range rather than parse_error,
+// so every json::exception counts as a syntax problem here.
+std::optional<json> parse_json(const std::string& text, const std::string& file,
+                               const DiagnosticConsumer& diag) {
+    try {
+        return json::parse(text);
+    } catch (const json::exception& e) {
+        report(diag, file, std::string("invalid JSON: ") + e.what());
+        return std::nullopt;
+    }
+}
+
 // Collects "FILE: case 'ID': field 'FIELD': reason" messages for one file.
 class Reporter {
   public:
@@ -42,11 +89,11 @@ class Reporter {
         : file_(std::move(file)), diag_(diag) {}
     void error(const std::string& where, const std::string& field, const std::string& reason) {
         ++errors_;
-        std::string msg = file_ + ": ";
+        std::string msg;
         if (!where.empty()) msg += where + ": ";
         if (!field.empty()) msg += "field '" + field + "': ";
         msg += reason;
-        if (diag_) diag_({Severity::Error, file_, 0, msg});
+        report(diag_, file_, msg);
     }
     int errors() const { return errors_; }
 
@@ -56,50 +103,57 @@ class Reporter {
     int errors_ = 0;
 };
 
-// Reads and checks the fields of one case; every problem is reported.
+// Reads and checks the fields of one case. Independent fields are all checked, so one pass
+// reports every problem; a check that needs an earlier value runs only when it was valid.
 class CaseReader {
   public:
     CaseReader(Reporter& rep, std::string where, const ValidationTolerances& tol)
         : rep_(rep), where_(std::move(where)), tol_(tol) {}
 
-    bool number(const json& obj, const std::string& key, const std::string& path, double& out) {
+    bool fail(const std::string& path, const std::string& reason) {
+        rep_.error(where_, path, reason);
+        return false;
+    }
+
+    bool number(const json& obj, const char* key, const std::string& path, double& out) {
         auto it = obj.find(key);
         if (it == obj.end()) return fail(path, "missing");
         if (!it->is_number()) return fail(path, "must be a number");
         out = it->get<double>();
-        if (!std::isfinite(out) || std::abs(out) > kMaxCoordinate)
-            return fail(
-                path, fmt::format("must be finite and at most {:g} in magnitude", kMaxCoordinate));
+        if (!(std::abs(out) <= kMaxCoordinate))
+            return fail(path, fmt::format("{:g} is not finite or larger than {:g} in magnitude",
+                                          out, kMaxCoordinate));
         return true;
     }
 
     bool vec3(const json& v, const std::string& path, Vec3& out) {
         if (!v.is_array() || v.size() != 3) return fail(path, "must be an array of 3 numbers");
-        for (int k = 0; k < 3; ++k) {
+        for (std::size_t k = 0; k < 3; ++k) {
             if (!v[k].is_number()) return fail(path, "must be an array of 3 numbers");
             out[k] = v[k].get<double>();
-            if (!std::isfinite(out[k]) || std::abs(out[k]) > kMaxCoordinate)
-                return fail(path, "components must be finite and at most 1e15 in magnitude");
+            if (!(std::abs(out[k]) <= kMaxCoordinate))
+                return fail(path,
+                            fmt::format("component {} is {:g}: not finite or larger than {:g} "
+                                        "in magnitude",
+                                        k, out[k], kMaxCoordinate));
         }
         return true;
     }
 
-    bool vec3_field(const json& obj, const std::string& key, const std::string& path, Vec3& out) {
+    bool vec3_field(const json& obj, const char* key, const std::string& path, Vec3& out) {
         auto it = obj.find(key);
         if (it == obj.end()) return fail(path, "missing");
         return vec3(*it, path, out);
     }
 
     bool nonzero(const Vec3& v, const std::string& path) {
-        return norm(v) > 0.0 ? true : fail(path, "must have non-zero length");
+        return norm(v) > 0.0 || fail(path, "must have non-zero length");
     }
 
-    bool fail(const std::string& path, const std::string& reason) {
-        rep_.error(where_, path, reason);
-        ok_ = false;
-        return false;
+    // A direction: present, 3 finite numbers, and normalizable.
+    bool direction(const json& obj, const char* key, const std::string& path, Vec3& out) {
+        return vec3_field(obj, key, path, out) && nonzero(out, path);
     }
-    bool ok() const { return ok_; }
 
     void read_polygon(const json& L, Light& light) {
         auto it = L.find("vertices");
@@ -116,16 +170,17 @@ class CaseReader {
                  fmt::format("has {} vertices; a polygon needs 3 to 8", it->size()));
             return;
         }
+        bool ok = true;
         for (std::size_t i = 0; i < it->size(); ++i) {
-            Vec3 x;
-            if (!vec3((*it)[i], fmt::format("light.vertices[{}]", i), x)) return;
+            Vec3 x{};
+            ok = vec3((*it)[i], fmt::format("light.vertices[{}]", i), x) && ok;
             light.vertices.push_back(x);
         }
-        check_polygon(light.vertices);
+        if (ok) check_polygon(light.vertices);
     }
 
-    // Planar within tol.coplanar_rel of the diameter, no repeated or collinear
-    // consecutive vertices, and convex (every turn has the sign of the Newell normal).
+    // The geometric checks of a polygon, in dependency order; the first failure ends them,
+    // since each later check is meaningless on a polygon that failed an earlier one.
     void check_polygon(const std::vector<Vec3>& V) {
         const std::size_t n = V.size();
         double diameter = 0.0;
@@ -133,52 +188,75 @@ class CaseReader {
             for (std::size_t j = i + 1; j < n; ++j)
                 diameter = std::max(diameter, norm(sub(V[i], V[j])));
         for (std::size_t i = 0; i < n; ++i) {
-            if (norm(sub(V[(i + 1) % n], V[i])) <= 1e-12 * diameter) {
-                fail(fmt::format("light.vertices[{}]", (i + 1) % n),
-                     fmt::format("repeats vertex {}", i));
+            const std::size_t next = (i + 1) % n;
+            if (norm(sub(V[next], V[i])) <= 1e-12 * diameter) {
+                fail(fmt::format("light.vertices[{}]", next), fmt::format("repeats vertex {}", i));
                 return;
             }
         }
+        // Newell's normal about the centroid: relative to the origin it would lose the
+        // polygon's own size to cancellation when the light lies far from the origin.
+        Vec3 centroid{};
+        for (const auto& x : V)
+            for (int k = 0; k < 3; ++k) centroid[k] += x[k] / static_cast<double>(n);
         Vec3 newell{};
         for (std::size_t i = 0; i < n; ++i) {
-            const Vec3 c = cross(V[i], V[(i + 1) % n]);
+            const Vec3 c = cross(sub(V[i], centroid), sub(V[(i + 1) % n], centroid));
             for (int k = 0; k < 3; ++k) newell[k] += c[k];
         }
         const double nl = norm(newell);
         if (!(nl > 0.0)) {
-            fail("light.vertices", "polygon has zero area");
+            fail("light.vertices", "the polygon has zero area");
             return;
         }
         const Vec3 N = {newell[0] / nl, newell[1] / nl, newell[2] / nl};
-        Vec3 centroid{};
-        for (const auto& x : V)
-            for (int k = 0; k < 3; ++k) centroid[k] += x[k] / n;
         for (std::size_t i = 0; i < n; ++i) {
             const double d = std::abs(dot(N, sub(V[i], centroid)));
             if (d > tol_.coplanar_rel * diameter) {
                 fail(fmt::format("light.vertices[{}]", i),
-                     fmt::format("is {:.3g} off the polygon's plane (more than {:g} of its size): "
-                                 "not coplanar",
-                                 d, tol_.coplanar_rel));
+                     fmt::format("is {:.3g} off the polygon's plane, more than {:g} of its "
+                                 "diameter {:.3g}: not coplanar",
+                                 d, tol_.coplanar_rel, diameter));
                 return;
             }
         }
+        double total_turn = 0.0;
         for (std::size_t i = 0; i < n; ++i) {
             const Vec3 a = sub(V[i], V[(i + n - 1) % n]), b = sub(V[(i + 1) % n], V[i]);
-            const double turn = dot(cross(a, b), N) / (norm(a) * norm(b));
-            if (std::abs(turn) <= tol_.collinear_rel) {
-                fail(fmt::format("light.vertices[{}]", i), "is collinear with its neighbours");
+            const double sin_turn = dot(cross(a, b), N) / (norm(a) * norm(b));
+            if (std::abs(sin_turn) <= tol_.collinear_rel) {
+                fail(fmt::format("light.vertices[{}]", i),
+                     "is collinear with its neighbours (a straight or folded-back corner)");
                 return;
             }
-            if (turn < 0.0) {
-                fail(fmt::format("light.vertices[{}]", i), "makes the polygon non-convex");
+            if (sin_turn < 0.0) {
+                fail(fmt::format("light.vertices[{}]", i),
+                     "is a reflex corner: the polygon is not convex");
                 return;
             }
+            total_turn += std::atan2(dot(cross(a, b), N), dot(a, b));
+        }
+        // Every turn having one sign still admits star polygons (a pentagram turns 4 pi);
+        // a convex polygon turns exactly once around.
+        if (total_turn > 3.0 * kPi) {
+            fail("light.vertices",
+                 fmt::format("the outline winds {:.0f} times around: the polygon intersects "
+                             "itself and is not convex",
+                             total_turn / (2.0 * kPi)));
         }
     }
 
     bool orthogonal(const Vec3& a, const Vec3& b) {
-        return std::abs(dot(a, b)) <= 1e-6 * norm(a) * norm(b);
+        return std::abs(dot(a, b)) <= kOrthogonalRel * norm(a) * norm(b);
+    }
+
+    void read_two_sided(const json& L, Light& light) {
+        if (auto ts = L.find("two_sided"); ts != L.end()) {
+            if (!ts->is_boolean())
+                fail("light.two_sided", "must be true or false");
+            else
+                light.two_sided = ts->get<bool>();
+        }
     }
 
     void read_light(const json& c, Light& light) {
@@ -198,58 +276,58 @@ class CaseReader {
             return;
         }
         const std::string type = t->get<std::string>();
-        if (auto ts = L.find("two_sided"); ts != L.end()) {
-            if (!ts->is_boolean())
-                fail("light.two_sided", "must be true or false");
-            else
-                light.two_sided = ts->get<bool>();
-        }
         if (type == "polygon") {
             light.type = LightType::Polygon;
+            read_two_sided(L, light);
             read_polygon(L, light);
         } else if (type == "disk") {
             light.type = LightType::Disk;
-            if (vec3_field(L, "center", "light.center", light.center) &&
-                vec3_field(L, "u", "light.u", light.u) && vec3_field(L, "v", "light.v", light.v) &&
-                nonzero(light.u, "light.u") && nonzero(light.v, "light.v") &&
-                !orthogonal(light.u, light.v)) {
-                fail("light.v", "must be orthogonal to light.u");
-            }
+            read_two_sided(L, light);
+            vec3_field(L, "center", "light.center", light.center);
+            const bool u = direction(L, "u", "light.u", light.u);
+            const bool v = direction(L, "v", "light.v", light.v);
+            if (u && v && !orthogonal(light.u, light.v))
+                fail("light.v", fmt::format("must be orthogonal to light.u (|u.v| <= {:g} |u||v|)",
+                                            kOrthogonalRel));
         } else if (type == "sphere") {
             light.type = LightType::Sphere;
-            if (vec3_field(L, "center", "light.center", light.center) &&
-                number(L, "radius", "light.radius", light.radius) && !(light.radius > 0.0)) {
-                fail("light.radius", "must be positive");
-            }
+            vec3_field(L, "center", "light.center", light.center);
+            if (number(L, "radius", "light.radius", light.radius) && !(light.radius > 0.0))
+                fail("light.radius", fmt::format("{:g} is not positive", light.radius));
         } else if (type == "ellipsoid") {
             light.type = LightType::Ellipsoid;
-            if (!vec3_field(L, "center", "light.center", light.center)) return;
-            auto a = L.find("axes");
-            if (a == L.end()) {
-                fail("light.axes", "missing");
-                return;
-            }
-            if (!a->is_array() || a->size() != 3) {
-                fail("light.axes", "must be an array of exactly 3 vectors");
-                return;
-            }
-            for (int i = 0; i < 3; ++i) {
-                const std::string path = fmt::format("light.axes[{}]", i);
-                if (!vec3((*a)[i], path, light.axes[i]) || !nonzero(light.axes[i], path)) return;
-            }
-            for (int i = 0; i < 3; ++i) {
-                for (int j = i + 1; j < 3; ++j) {
-                    if (!orthogonal(light.axes[i], light.axes[j])) {
-                        fail(fmt::format("light.axes[{}]", j),
-                             fmt::format("must be orthogonal to light.axes[{}]", i));
-                        return;
-                    }
-                }
-            }
+            vec3_field(L, "center", "light.center", light.center);
+            read_axes(L, light);
         } else {
             fail("light.type",
                  "unknown type '" + type + "' (expected polygon, disk, sphere or ellipsoid)");
         }
+    }
+
+    void read_axes(const json& L, Light& light) {
+        auto a = L.find("axes");
+        if (a == L.end()) {
+            fail("light.axes", "missing");
+            return;
+        }
+        if (!a->is_array() || a->size() != 3) {
+            fail("light.axes",
+                 a->is_array()
+                     ? fmt::format("has {} vectors; an ellipsoid needs exactly 3", a->size())
+                     : "must be an array of exactly 3 vectors");
+            return;
+        }
+        bool ok = true;
+        for (std::size_t i = 0; i < 3; ++i) {
+            const std::string path = fmt::format("light.axes[{}]", i);
+            ok = (vec3((*a)[i], path, light.axes[i]) && nonzero(light.axes[i], path)) && ok;
+        }
+        if (!ok) return;
+        for (std::size_t i = 0; i < 3; ++i)
+            for (std::size_t j = i + 1; j < 3; ++j)
+                if (!orthogonal(light.axes[i], light.axes[j]))
+                    fail(fmt::format("light.axes[{}]", j),
+                         fmt::format("must be orthogonal to light.axes[{}]", i));
     }
 
     void read_material(const json& c, Material& m) {
@@ -287,16 +365,11 @@ class CaseReader {
     Reporter& rep_;
     std::string where_;
     const ValidationTolerances& tol_;
-    bool ok_ = true;
 };
 
-std::string file_name_of(const std::string& path) {
-    return path;
-}
-
-void put(json& j, const char* key, const std::optional<double>& v) {
+void put(ordered_json& j, const char* key, const std::optional<double>& v) {
     if (!v) return;
-    // JSON has no NaN or infinity: a non-finite value is written as null.
+    // JSON has no NaN or infinity: a non-finite value is written as null (read back as absent).
     if (std::isfinite(*v))
         j[key] = *v;
     else
@@ -308,26 +381,26 @@ void put(json& j, const char* key, const std::optional<double>& v) {
 std::optional<CaseSet> parse_cases(const std::string& text, const std::string& name,
                                    const DiagnosticConsumer& diag,
                                    const ValidationTolerances& tol) {
-    Reporter rep(file_name_of(name), diag);
-    json doc;
-    try {
-        doc = json::parse(text);
-    } catch (const json::parse_error& e) {
-        rep.error("", "", std::string("invalid JSON: ") + e.what());
-        return std::nullopt;
-    }
+    auto parsed = parse_json(text, name, diag);
+    if (!parsed) return std::nullopt;
+    const json& doc = *parsed;
+    Reporter rep(name, diag);
     if (!doc.is_object()) {
         rep.error("", "format", "the file must be a JSON object");
         return std::nullopt;
     }
     auto f = doc.find("format");
-    if (f == doc.end() || !f->is_string() || f->get<std::string>() != "arealight-cases/1") {
-        rep.error("", "format", "must be \"arealight-cases/1\"");
+    if (f == doc.end()) {
+        rep.error("", "format", "missing (expected \"arealight-cases/1\")");
+        return std::nullopt;
+    }
+    if (!f->is_string() || f->get<std::string>() != "arealight-cases/1") {
+        rep.error("", "format", "is " + f->dump() + ", expected \"arealight-cases/1\"");
         return std::nullopt;
     }
     auto cs = doc.find("cases");
     if (cs == doc.end() || !cs->is_array()) {
-        rep.error("", "cases", "must be an array of cases");
+        rep.error("", "cases", cs == doc.end() ? "missing" : "must be an array of cases");
         return std::nullopt;
     }
     CaseSet set;
@@ -335,9 +408,10 @@ std::optional<CaseSet> parse_cases(const std::string& text, const std::string& n
     for (std::size_t i = 0; i < cs->size(); ++i) {
         const json& c = (*cs)[i];
         Case out;
+        // A case is named by its id when it has a usable one, else by its index in "cases".
         std::string where = fmt::format("case #{}", i);
         if (!c.is_object()) {
-            rep.error(where, "", "must be an object");
+            rep.error("", fmt::format("cases[{}]", i), "must be an object");
             continue;
         }
         auto id = c.find("id");
@@ -351,8 +425,8 @@ std::optional<CaseSet> parse_cases(const std::string& text, const std::string& n
         }
         CaseReader r(rep, where, tol);
         r.vec3_field(c, "p", "p", out.p);
-        if (r.vec3_field(c, "n", "n", out.n)) r.nonzero(out.n, "n");
-        if (r.vec3_field(c, "v", "v", out.v)) r.nonzero(out.v, "v");
+        r.direction(c, "n", "n", out.n);
+        r.direction(c, "v", "v", out.v);
         r.read_light(c, out.light);
         r.read_material(c, out.material);
         set.cases.push_back(std::move(out));
@@ -363,25 +437,19 @@ std::optional<CaseSet> parse_cases(const std::string& text, const std::string& n
 
 std::optional<CaseSet> read_cases(const std::string& path, const DiagnosticConsumer& diag,
                                   const ValidationTolerances& tol) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        const int err = errno;
-        if (diag) diag({Severity::Error, path, 0, path + ": cannot read: " + std::strerror(err)});
-        return std::nullopt;
-    }
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return parse_cases(ss.str(), path, diag, tol);
+    auto text = read_text(path, diag);
+    if (!text) return std::nullopt;
+    return parse_cases(*text, path, diag, tol);
 }
 
 std::string format_results(const ResultSet& results) {
-    json doc = json::object();
+    ordered_json doc = ordered_json::object();
     doc["format"] = "arealight-results/1";
     doc["variant"] = results.variant;
     doc["backend"] = results.backend;
-    json arr = json::array();
+    ordered_json arr = ordered_json::array();
     for (const auto& r : results.results) {
-        json j = json::object();
+        ordered_json j = ordered_json::object();
         j["id"] = r.id;
         put(j, "diffuse", r.diffuse);
         put(j, "specular", r.specular);
@@ -395,8 +463,9 @@ std::string format_results(const ResultSet& results) {
         arr.push_back(std::move(j));
     }
     doc["results"] = std::move(arr);
-    // nlohmann writes doubles with max_digits10 digits: they read back bit-exact.
-    return doc.dump(1) + "\n";
+    // nlohmann prints the shortest digits that read back as the same double, so values
+    // round-trip bit for bit. Invalid UTF-8 in a name is replaced rather than thrown on.
+    return doc.dump(1, ' ', false, ordered_json::error_handler_t::replace) + "\n";
 }
 
 bool write_results(const std::string& path, const ResultSet& results,
@@ -405,48 +474,78 @@ bool write_results(const std::string& path, const ResultSet& results,
 }
 
 std::optional<ResultSet> read_results(const std::string& path, const DiagnosticConsumer& diag) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        const int err = errno;
-        if (diag) diag({Severity::Error, path, 0, path + ": cannot read: " + std::strerror(err)});
+    auto text = read_text(path, diag);
+    if (!text) return std::nullopt;
+    auto parsed = parse_json(*text, path, diag);
+    if (!parsed) return std::nullopt;
+    const json& doc = *parsed;
+    Reporter rep(path, diag);
+    if (!doc.is_object()) {
+        rep.error("", "format", "the file must be a JSON object");
         return std::nullopt;
     }
-    json doc;
-    try {
-        doc = json::parse(in);
-    } catch (const json::parse_error& e) {
-        if (diag) diag({Severity::Error, path, 0, path + ": invalid JSON: " + e.what()});
+    auto f = doc.find("format");
+    if (f == doc.end() || !f->is_string() || f->get<std::string>() != "arealight-results/1") {
+        rep.error("", "format",
+                  f == doc.end() ? "missing (expected \"arealight-results/1\")"
+                                 : "is " + f->dump() + ", expected \"arealight-results/1\"");
         return std::nullopt;
     }
-    if (!doc.is_object() || doc.value("format", "") != "arealight-results/1" ||
-        !doc.contains("results") || !doc["results"].is_array()) {
-        if (diag)
-            diag({Severity::Error, path, 0,
-                  path + ": field 'format': not an arealight-results/1 file"});
+    auto rs = doc.find("results");
+    if (rs == doc.end() || !rs->is_array()) {
+        rep.error("", "results", rs == doc.end() ? "missing" : "must be an array");
         return std::nullopt;
     }
     ResultSet out;
-    out.variant = doc.value("variant", "");
-    out.backend = doc.value("backend", "");
-    for (const auto& j : doc["results"]) {
+    auto text_field = [&](const char* key, std::string& s) {
+        auto it = doc.find(key);
+        if (it == doc.end()) return;
+        if (it->is_string())
+            s = it->get<std::string>();
+        else
+            rep.error("", key, "must be a string");
+    };
+    text_field("variant", out.variant);
+    text_field("backend", out.backend);
+    for (std::size_t i = 0; i < rs->size(); ++i) {
+        const json& j = (*rs)[i];
+        const std::string where = fmt::format("results[{}]", i);
+        if (!j.is_object()) {
+            rep.error("", where, "must be an object");
+            continue;
+        }
         CaseResult r;
-        r.id = j.value("id", "");
-        auto get = [&](const char* key, std::optional<double>& v) {
+        auto id = j.find("id");
+        if (id == j.end() || !id->is_string())
+            rep.error("", where + ".id", id == j.end() ? "missing" : "must be a string");
+        else
+            r.id = id->get<std::string>();
+        // Absent and null both leave the value unset (null is how non-finite values are written).
+        auto number = [&](const char* key, std::optional<double>& v) {
             auto it = j.find(key);
-            if (it != j.end() && it->is_number()) v = it->get<double>();
+            if (it == j.end() || it->is_null()) return;
+            if (it->is_number())
+                v = it->get<double>();
+            else
+                rep.error("", where + "." + key, "must be a number or null");
         };
-        get("diffuse", r.diffuse);
-        get("specular", r.specular);
-        get("ndf", r.ndf);
-        get("moment", r.moment);
-        get("error", r.error);
-        get("error_diffuse", r.error_diffuse);
-        get("error_ndf", r.error_ndf);
-        get("error_moment", r.error_moment);
-        if (auto it = j.find("converged"); it != j.end() && it->is_boolean())
-            r.converged = it->get<bool>();
+        number("diffuse", r.diffuse);
+        number("specular", r.specular);
+        number("ndf", r.ndf);
+        number("moment", r.moment);
+        number("error", r.error);
+        number("error_diffuse", r.error_diffuse);
+        number("error_ndf", r.error_ndf);
+        number("error_moment", r.error_moment);
+        if (auto it = j.find("converged"); it != j.end() && !it->is_null()) {
+            if (it->is_boolean())
+                r.converged = it->get<bool>();
+            else
+                rep.error("", where + ".converged", "must be true, false or null");
+        }
         out.results.push_back(std::move(r));
     }
+    if (rep.errors() > 0) return std::nullopt;
     return out;
 }
 

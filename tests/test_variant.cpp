@@ -1,6 +1,8 @@
 // The variant value type: canonical names, round trips, enumeration, errors.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <set>
+#include <sstream>
 
 #include "arealight/variant.hpp"
 
@@ -8,11 +10,36 @@ using namespace arealight;
 
 namespace {
 
+using Defines = std::vector<std::pair<std::string, std::string>>;
+
+std::string show(const Defines& defines) {
+    std::ostringstream s;
+    for (const auto& [name, value] : defines) s << name << '=' << value << ' ';
+    return s.str();
+}
+
+// The message of the single Error diagnostic a bad name must produce.
 std::string error_of(const std::string& name) {
-    std::string msg;
-    auto v = parse_variant(name, [&](const Diagnostic& d) { msg += d.message; });
+    std::vector<Diagnostic> got;
+    auto v = parse_variant(name, [&](const Diagnostic& d) { got.push_back(d); });
+    INFO("name: " << name);
     CHECK_FALSE(v);
-    return msg;
+    REQUIRE(got.size() == 1);
+    CHECK(got[0].severity == Severity::Error);
+    CHECK(got[0].file.empty());
+    CHECK(got[0].line == 0);
+    const std::string prefix = "variant '" + name + "': ";
+    CHECK(got[0].message.rfind(prefix, 0) == 0);
+    return got[0].message;
+}
+
+Variant parse_ok(const std::string& name) {
+    std::string why;
+    auto v = parse_variant(name, [&](const Diagnostic& d) { why += d.message; });
+    INFO(name << ": " << why);
+    REQUIRE(v);
+    CHECK(why.empty());
+    return *v;
 }
 
 }  // namespace
@@ -23,63 +50,204 @@ TEST_CASE("canonical names list the fixed keys, then non-default keys", "[varian
     v.nodes = 24;
     v.sided = Sided::Two;
     CHECK(canonical_name(v) == "dist=phong,method=exact,light=polygon,sided=two,nodes=24");
-    v.method = Method::Point;  // nodes does not apply to the point method
-    v.verts = 4;
-    CHECK(canonical_name(v) == "dist=phong,method=point,light=polygon,sided=two,verts=4");
-    auto p = parse_variant("light=polygon,nodes=8,dist=phong,method=exact,verts=5", {});
-    REQUIRE(p);
-    CHECK(canonical_name(*p) == "dist=phong,method=exact,light=polygon,verts=5,nodes=8");
+    v.verts = 3;
+    CHECK(canonical_name(v) == "dist=phong,method=exact,light=polygon,sided=two,verts=3,nodes=24");
+
+    Variant point;
+    point.method = Method::Point;
+    point.verts = 4;
+    CHECK(canonical_name(point) == "dist=phong,method=point,light=polygon,verts=4");
+    point.nodes = 24;  // not used by the point method, so not named
+    CHECK(canonical_name(point) == "dist=phong,method=point,light=polygon,verts=4");
+
+    // Keys in any order, defaults spelled out: the canonical form drops them.
+    auto p = parse_ok("light=polygon,nodes=8,sided=any,dist=phong,method=exact,verts=5");
+    CHECK(canonical_name(p) == "dist=phong,method=exact,light=polygon,verts=5,nodes=8");
+    CHECK(canonical_name(parse_ok("method=point,light=polygon,dist=phong,sided=one")) ==
+          "dist=phong,method=point,light=polygon,sided=one");
+}
+
+TEST_CASE("parsing fills the named fields and defaults the rest", "[variant]") {
+    const Variant d = parse_ok("dist=phong,method=exact,light=polygon");
+    CHECK(d == Variant{});
+    CHECK(d.sided == Sided::Any);
+    CHECK(d.verts == 8);
+    CHECK(d.nodes == 16);
+
+    const Variant v = parse_ok("dist=phong,method=exact,light=polygon,sided=two,verts=3,nodes=12");
+    CHECK(v.dist == Distribution::Phong);
+    CHECK(v.method == Method::Exact);
+    CHECK(v.light == LightType::Polygon);
+    CHECK(v.sided == Sided::Two);
+    CHECK(v.verts == 3);
+    CHECK(v.nodes == 12);
+    CHECK(v != d);
+
+    CHECK(std::string(to_string(Method::Exact)) == "exact");
+    CHECK(std::string(to_string(Method::Point)) == "point");
+    CHECK(std::string(to_string(Sided::Any)) == "any");
+    CHECK(std::string(to_string(Sided::One)) == "one");
+    CHECK(std::string(to_string(Sided::Two)) == "two");
 }
 
 TEST_CASE("enumeration: every variant valid, unique, and round-trips", "[variant]") {
     const auto all = enumerate_variants();
-    // phong exact: 3 sided x 6 verts x 4 nodes; phong point: 3 sided x 6 verts.
-    CHECK(all.size() == 3 * 6 * 4 + 3 * 6);
+    const std::size_t sided = 3;  // any, one, two
+    const std::size_t verts = 8 - 3 + 1;
+    const std::size_t nodes = 4;  // 8, 12, 16, 24
+    const std::size_t phong_exact_polygon = sided * verts * nodes;
+    const std::size_t phong_point_polygon = sided * verts;
+    INFO("enumerated " << all.size());
+    CHECK(all.size() == phong_exact_polygon + phong_point_polygon);
+
     std::set<std::string> names;
     for (const auto& v : all) {
         const std::string name = canonical_name(v);
-        std::string why;
-        auto back = parse_variant(name, [&](const Diagnostic& d) { why += d.message; });
-        INFO(name << ": " << why);
-        REQUIRE(back);
-        CHECK(*back == v);
+        INFO(name);
+        CHECK(is_valid(v));
         CHECK(names.insert(name).second);
+        const Variant back = parse_ok(name);
+        CHECK(back == v);
+        CHECK(canonical_name(back) == name);
     }
+    CHECK(names.size() == all.size());
+
+    // Fixed order: family first, then sided, verts, nodes.
+    REQUIRE(all.size() >= 2);
+    CHECK(canonical_name(all.front()) == "dist=phong,method=exact,light=polygon,verts=3,nodes=8");
+    CHECK(canonical_name(all[1]) == "dist=phong,method=exact,light=polygon,verts=3,nodes=12");
+    CHECK(canonical_name(all.back()) == "dist=phong,method=point,light=polygon,sided=two");
+    CHECK(enumerate_variants() == all);
+}
+
+TEST_CASE("validity: implemented family, keys in range, unused keys at default", "[variant]") {
+    CHECK(is_valid(Variant{}));
+    Variant v;
+    v.verts = 9;
+    CHECK_FALSE(is_valid(v));
+    v = Variant{};
+    v.nodes = 10;
+    CHECK_FALSE(is_valid(v));
+    v = Variant{};
+    v.dist = Distribution::Ggx;
+    CHECK_FALSE(is_valid(v));
+    v = Variant{};
+    v.method = Method::Point;
+    CHECK(is_valid(v));
+    v.nodes = 24;  // names the same shader as nodes=16 would: only one of them is valid
+    CHECK_FALSE(is_valid(v));
 }
 
 TEST_CASE("bad variant names are rejected naming the key", "[variant]") {
+    using Catch::Matchers::Contains;
     CHECK_THAT(error_of("dist=phong,method=exact,light=polygon,color=red"),
-               Catch::Matchers::Contains("unknown key 'color'"));
+               Contains("unknown key 'color'"));
     CHECK_THAT(error_of("dist=lambert,method=exact,light=polygon"),
-               Catch::Matchers::Contains("key 'dist': unknown value 'lambert'"));
-    CHECK_THAT(error_of("dist=phong,method=exact,light=polygon,verts=9"),
-               Catch::Matchers::Contains("key 'verts': value '9' out of range 3..8"));
-    CHECK_THAT(error_of("method=exact,light=polygon"),
-               Catch::Matchers::Contains("key 'dist' is required"));
-    CHECK_THAT(error_of("dist=phong,light=polygon"),
-               Catch::Matchers::Contains("key 'method' is required"));
-    CHECK_THAT(error_of("dist=phong,method=exact"),
-               Catch::Matchers::Contains("key 'light' is required"));
-    CHECK_THAT(error_of("dist=phong,dist=phong,method=exact,light=polygon"),
-               Catch::Matchers::Contains("key 'dist' given twice"));
+               Contains("key 'dist': unknown value 'lambert' (expected phong, blinn, beckmann, "
+                        "ggx)"));
+    CHECK_THAT(error_of("dist=phong,method=ltcx,light=polygon"),
+               Contains("key 'method': unknown value 'ltcx' (expected exact, point)"));
+    CHECK_THAT(error_of("dist=phong,method=exact,light=quad"),
+               Contains("key 'light': unknown value 'quad' (expected polygon, disk, sphere, "
+                        "ellipsoid)"));
+    CHECK_THAT(error_of("dist=phong,method=exact,light=polygon,sided=both"),
+               Contains("key 'sided': unknown value 'both' (expected any, one, two)"));
+    CHECK(error_of("dist=phong,method=exact,light=polygon,verts=9") ==
+          "variant 'dist=phong,method=exact,light=polygon,verts=9': key 'verts': value '9' out "
+          "of range 3..8");
+    CHECK_THAT(error_of("dist=phong,method=exact,light=polygon,verts=2"),
+               Contains("key 'verts': value '2' out of range 3..8"));
+    CHECK_THAT(error_of("dist=phong,method=exact,light=polygon,verts=-4"),
+               Contains("key 'verts': value '-4' is not an integer in 3..8"));
+    CHECK_THAT(error_of("dist=phong,method=exact,light=polygon,nodes=10"),
+               Contains("key 'nodes': value '10' is not one of 8, 12, 16, 24"));
+    CHECK_THAT(error_of("method=exact,light=polygon"), Contains("key 'dist' is required"));
+    CHECK_THAT(error_of("dist=phong,light=polygon"), Contains("key 'method' is required"));
+    CHECK_THAT(error_of("dist=phong,method=exact"), Contains("key 'light' is required"));
+    CHECK_THAT(error_of(""), Contains("key 'dist' is required"));
+    CHECK_THAT(error_of("dist=phong,method=exact,light=polygon,dist=phong"),
+               Contains("key 'dist' given twice"));
+    CHECK_THAT(error_of("dist=phong,method=exact,light=polygon,verts=4,verts=5"),
+               Contains("key 'verts' given twice"));
     CHECK_THAT(error_of("dist=phong,method=point,light=polygon,nodes=8"),
-               Catch::Matchers::Contains("key 'nodes' applies to method=exact only"));
+               Contains("key 'nodes' applies to method=exact only"));
+    CHECK_THAT(error_of("dist=phong,method=exact,light=disk,verts=4"),
+               Contains("key 'verts' applies to light=polygon only"));
     CHECK_THAT(error_of("dist=ggx,method=exact,light=polygon"),
-               Catch::Matchers::Contains("no variant for dist=ggx,method=exact,light=polygon"));
-    CHECK_THAT(error_of("dist=phong, method=exact,light=polygon"),
-               Catch::Matchers::Contains("not key=value"));
+               Contains("no variant for dist=ggx,method=exact,light=polygon yet"));
+    CHECK_THAT(error_of("dist=phong,method=exact,light=sphere"),
+               Contains("no variant for dist=phong,method=exact,light=sphere yet"));
 }
 
-TEST_CASE("defines and pattern matching", "[variant]") {
-    auto v = parse_variant("dist=phong,method=exact,light=polygon,sided=one,verts=4,nodes=12", {});
-    REQUIRE(v);
-    const std::vector<std::pair<std::string, std::string>> expected = {
-        {"AL_DIST_PHONG", "1"}, {"AL_METHOD_EXACT", "1"}, {"AL_LIGHT_POLYGON", "1"},
-        {"AL_SIDED", "1"},      {"AL_MAX_VERTS", "4"},    {"AL_NODES", "12"}};
-    CHECK(variant_defines(*v) == expected);
-    CHECK(variant_matches(*v, ""));
-    CHECK(variant_matches(*v, "dist=phong,light=polygon"));
-    CHECK(variant_matches(*v, "nodes=12"));
-    CHECK_FALSE(variant_matches(*v, "method=point"));
-    CHECK_FALSE(variant_matches(*v, "colour=red"));
+TEST_CASE("malformed variant names are rejected", "[variant]") {
+    using Catch::Matchers::Contains;
+    for (const std::string name :
+         {"dist=phong, method=exact,light=polygon", "dist=phong,method=exact,light=polygon ",
+          " dist=phong,method=exact,light=polygon", "dist =phong,method=exact,light=polygon",
+          "dist=phong,method=exact,light=polygon\n", "dist=phong,,method=exact,light=polygon",
+          "dist=phong,method=exact,light=polygon,", "dist=phong,method,light=polygon",
+          "dist=phong,method=exact=point,light=polygon", "=phong,method=exact,light=polygon",
+          "dist=,method=exact,light=polygon"}) {
+        CHECK_THAT(error_of(name), Contains("is not key=value"));
+    }
+    // No consumer: still rejected, nothing thrown or printed.
+    CHECK_FALSE(parse_variant("dist=phong", {}));
+}
+
+TEST_CASE("defines name the chosen values and only the keys that apply", "[variant]") {
+    const Variant exact =
+        parse_ok("dist=phong,method=exact,light=polygon,sided=one,verts=4,nodes=12");
+    const Defines want_exact = {{"AL_DIST_PHONG", "1"},    {"AL_METHOD_EXACT", "1"},
+                                {"AL_LIGHT_POLYGON", "1"}, {"AL_SIDED", "1"},
+                                {"AL_MAX_VERTS", "4"},     {"AL_NODES", "12"}};
+    INFO("exact: " << show(variant_defines(exact)));
+    CHECK(variant_defines(exact) == want_exact);
+
+    const Variant point = parse_ok("dist=phong,method=point,light=polygon,sided=two");
+    const Defines want_point = {{"AL_DIST_PHONG", "1"},
+                                {"AL_METHOD_POINT", "1"},
+                                {"AL_LIGHT_POLYGON", "1"},
+                                {"AL_SIDED", "2"},
+                                {"AL_MAX_VERTS", "8"}};
+    INFO("point: " << show(variant_defines(point)));
+    CHECK(variant_defines(point) == want_point);
+
+    const Defines any = variant_defines(Variant{});
+    INFO("default: " << show(any));
+    CHECK(std::count(any.begin(), any.end(),
+                     std::make_pair(std::string("AL_SIDED"), std::string("0"))) == 1);
+}
+
+TEST_CASE("pattern matching compares effective values", "[variant]") {
+    const Variant v = parse_ok("dist=phong,method=exact,light=polygon,sided=one,verts=4,nodes=12");
+    CHECK(variant_matches(v, ""));
+    CHECK(variant_matches(v, "dist=phong"));
+    CHECK(variant_matches(v, "dist=phong,light=polygon"));
+    CHECK(variant_matches(v, "nodes=12,verts=4,sided=one"));
+    CHECK_FALSE(variant_matches(v, "nodes=16"));
+    CHECK_FALSE(variant_matches(v, "method=point"));
+    CHECK_FALSE(variant_matches(v, "dist=phong,method=point"));
+    CHECK_FALSE(variant_matches(v, "colour=red"));
+    CHECK_FALSE(variant_matches(v, "dist=lambert"));
+    CHECK_FALSE(variant_matches(v, "dist=phong,"));
+    CHECK_FALSE(variant_matches(v, "dist = phong"));
+
+    // Defaults count as values when the name left them out.
+    const Variant d = parse_ok("dist=phong,method=exact,light=polygon");
+    CHECK(variant_matches(d, "sided=any,verts=8,nodes=16"));
+    // A key the variant does not use has no value to match.
+    const Variant p = parse_ok("dist=phong,method=point,light=polygon");
+    CHECK(variant_matches(p, "method=point,verts=8"));
+    CHECK_FALSE(variant_matches(p, "nodes=16"));
+
+    std::size_t exact = 0, point = 0, all = 0;
+    for (const auto& e : enumerate_variants()) {
+        all += variant_matches(e, "");
+        exact += variant_matches(e, "method=exact,sided=two");
+        point += variant_matches(e, "method=point,verts=3");
+    }
+    INFO("all " << all << ", exact sided=two " << exact << ", point verts=3 " << point);
+    CHECK(all == enumerate_variants().size());
+    CHECK(exact == 6 * 4);
+    CHECK(point == 3);
 }

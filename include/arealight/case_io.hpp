@@ -25,7 +25,9 @@ std::optional<CaseSet> parse_cases(const std::string& text, const std::string& n
                                    const DiagnosticConsumer& diag,
                                    const ValidationTolerances& tol = {});
 
-// Serializes with round-trip-exact doubles.
+// Serializes with round-trip-exact doubles, keys in the order of CONTRACT.md and only the
+// present fields. JSON has no NaN or infinity: a non-finite value is written as null, which
+// read_results reads back as absent.
 std::string format_results(const ResultSet& results);
 // Writes atomically (temporary file in the same folder, then rename).
 // On failure the destination is untouched and false is returned.

@@ -40,7 +40,13 @@ const char* to_string(Sided s);
 // not applicable) and the combination when it has no implementation.
 std::optional<Variant> parse_variant(const std::string& name, const DiagnosticConsumer& diag);
 
+// An implemented family, every key in range, and every key that does not apply
+// left at its default, so that equal shaders compare equal and parse_variant
+// returns exactly the valid variants.
+bool is_valid(const Variant& v);
+
 // dist, method, light, then the keys that apply and differ from their default.
+// parse_variant(canonical_name(v)) == v for every valid v.
 std::string canonical_name(const Variant& v);
 
 // Every valid variant, in a fixed order, without duplicates.
@@ -50,7 +56,9 @@ std::vector<Variant> enumerate_variants();
 std::vector<std::pair<std::string, std::string>> variant_defines(const Variant& v);
 
 // True when every key=value of `pattern` (a partial name; empty matches all)
-// equals the variant's effective value. An invalid pattern matches nothing.
+// equals the variant's effective value, defaults included. A key the variant
+// does not use (nodes for method=point) has no value and so never matches, and
+// an invalid pattern matches nothing.
 bool variant_matches(const Variant& v, const std::string& pattern);
 
 }  // namespace arealight
