@@ -23,9 +23,46 @@ void emit_prolog(std::string& out, Language lang) {
     }
 }
 
-// The few spellings GLSL and C++ do not share, as macros the templates use.
-void emit_language_macros(std::string& out, Language lang) {
+// The suffix of a literal at the variant's working precision: fp64 GLSL needs lf
+// (an unsuffixed GLSL literal is fp32 and would be rounded first), C++ has none.
+std::string literal_suffix(const Variant& v, Language lang) {
+    if (effective_precision(v) == Precision::Fp32) return "f";
+    return lang == Language::Glsl ? "lf" : "";
+}
+
+// Templates write a literal at the working precision as AL_R(1.5). glslang cannot
+// paste a suffix onto a number with ##, so the stitcher spells such literals out
+// itself, on the same line (the #line markers stay exact).
+std::string expand_literals(const std::string& text, const std::string& suffix) {
+    static const std::string open = "AL_R(";
+    std::string out;
+    std::size_t pos = 0;
+    for (;;) {
+        const std::size_t at = text.find(open, pos);
+        const std::size_t close = at == std::string::npos ? at : text.find(')', at);
+        if (close == std::string::npos) break;
+        out.append(text, pos, at - pos);
+        out.append(text, at + open.size(), close - at - open.size());
+        out += suffix;
+        pos = close + 1;
+    }
+    out.append(text, pos, std::string::npos);
+    return out;
+}
+
+// The few spellings GLSL and C++ do not share, as macros the templates use, and
+// the working precision: the templates compute in `real` and `rvec2..4`.
+void emit_language_macros(std::string& out, const Variant& v, Language lang) {
     out += lang == Language::Glsl ? "#define AL_INOUT(T) inout T\n" : "#define AL_INOUT(T) T&\n";
+    if (effective_precision(v) == Precision::Fp64) {
+        out +=
+            "#define real double\n#define rvec2 dvec2\n#define rvec3 dvec3\n"
+            "#define rvec4 dvec4\n";
+    } else {
+        out +=
+            "#define real float\n#define rvec2 vec2\n#define rvec3 vec3\n"
+            "#define rvec4 vec4\n";
+    }
 }
 
 void emit_banner(std::string& out, const Variant& v, Language lang) {
@@ -41,31 +78,35 @@ void emit_defines(std::string& out, const Variant& v) {
     }
 }
 
-// Gauss-Legendre tables for AL_NODES, in the syntax of each language.
+// Gauss-Legendre tables for AL_NODES at the working precision, with enough digits
+// to round-trip a double.
 void emit_tables(std::string& out, const Variant& v, Language lang) {
     if (v.method != Method::Exact) return;
     std::vector<double> x, w;
     gauss_legendre(v.nodes, x, w);
+    const std::string suffix = literal_suffix(v, lang);
     auto table = [&](const char* name, const std::vector<double>& values) {
         std::string items;
-        for (double d : values) items += fmt::format("{}{:.9g}f", items.empty() ? "" : ", ", d);
+        for (double d : values)
+            items += fmt::format("{}{:.17e}{}", items.empty() ? "" : ", ", d, suffix);
         if (lang == Language::Glsl) {
-            out += fmt::format("const float {}[{}] = float[{}]({});\n", name, values.size(),
+            out += fmt::format("const real {}[{}] = real[{}]({});\n", name, values.size(),
                                values.size(), items);
         } else {
-            out += fmt::format("static const float {}[{}] = {{{}}};\n", name, values.size(), items);
+            out += fmt::format("static const real {}[{}] = {{{}}};\n", name, values.size(), items);
         }
     };
     table("AL_GL_X", x);
     table("AL_GL_W", w);
 }
 
-void emit_template(std::string& out, const std::string& path, const TemplateLookup& lookup) {
+void emit_template(std::string& out, const std::string& path, const TemplateLookup& lookup,
+                   const std::string& suffix) {
     const std::string* text = lookup(path);
     static const std::string missing = "#error missing template\n";
     if (!text) text = &missing;
     out += fmt::format("#line 1 \"{}\"\n", path);
-    out += *text;
+    out += expand_literals(*text, suffix);
     if (!text->empty() && text->back() != '\n') out += '\n';
     // Back to the generated text: the next line number is the current line + 1.
     out += fmt::format("#line {} \"{}\"\n", count_lines(out) + 2, kGeneratedName);
@@ -92,10 +133,11 @@ std::string generate_source(const Variant& v, Language lang, const TemplateLooku
     std::string out;
     emit_prolog(out, lang);
     emit_banner(out, v, lang);
-    emit_language_macros(out, lang);
+    emit_language_macros(out, v, lang);
     emit_defines(out, v);
     emit_tables(out, v, lang);
-    for (const auto& path : variant_templates(v, lang)) emit_template(out, path, lookup);
+    const std::string suffix = literal_suffix(v, lang);
+    for (const auto& path : variant_templates(v, lang)) emit_template(out, path, lookup, suffix);
     return out;
 }
 

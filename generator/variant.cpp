@@ -18,6 +18,7 @@ const LightType kLights[] = {LightType::Polygon, LightType::Disk, LightType::Sph
                              LightType::Ellipsoid};
 const Sided kSided[] = {Sided::Any, Sided::One, Sided::Two};
 const int kNodes[] = {8, 12, 16, 24};
+const Precision kPrecisions[] = {Precision::Fp64, Precision::Fp32};
 const int kMinVerts = 3;
 const int kMaxVerts = 8;  // the templates size their per-vertex arrays by AL_MAX_VERTS
 
@@ -42,6 +43,9 @@ bool uses_verts(const Variant& v) {
     return v.light == LightType::Polygon;
 }
 bool uses_nodes(const Variant& v) {
+    return v.method == Method::Exact;
+}
+bool uses_precision(const Variant& v) {
     return v.method == Method::Exact;
 }
 bool verts_in_range(int n) {
@@ -106,6 +110,12 @@ std::optional<std::vector<std::pair<std::string, std::string>>> split(const std:
 const char* to_string(Method m) {
     return m == Method::Exact ? "exact" : "point";
 }
+const char* to_string(Precision p) {
+    return p == Precision::Fp64 ? "fp64" : "fp32";
+}
+Precision effective_precision(const Variant& v) {
+    return uses_precision(v) ? v.precision : Precision::Fp32;
+}
 const char* to_string(Sided s) {
     switch (s) {
         case Sided::Any:
@@ -167,9 +177,14 @@ std::optional<Variant> parse_variant(const std::string& name, const DiagnosticCo
                 return fail(fmt::format("key 'nodes': value '{}' is not one of {}", value,
                                         fmt::join(kNodes, ", ")));
             v.nodes = *n;
+        } else if (key == "precision") {
+            auto p = lookup(kPrecisions, value);
+            if (!p) return bad(choices(kPrecisions));
+            v.precision = *p;
         } else {
             return fail(fmt::format(
-                "unknown key '{}' (keys: dist, method, light, sided, verts, nodes)", key));
+                "unknown key '{}' (keys: dist, method, light, sided, verts, nodes, precision)",
+                key));
         }
     }
     for (const char* required : {"dist", "method", "light"}) {
@@ -179,6 +194,8 @@ std::optional<Variant> parse_variant(const std::string& name, const DiagnosticCo
         return fail("key 'verts' applies to light=polygon only");
     if (seen.count("nodes") && !uses_nodes(v))
         return fail("key 'nodes' applies to method=exact only");
+    if (seen.count("precision") && !uses_precision(v))
+        return fail("key 'precision' applies to method=exact only");
     if (!has_family(v)) {
         return fail(fmt::format("no variant for dist={},method={},light={} yet", to_string(v.dist),
                                 to_string(v.method), to_string(v.light)));
@@ -192,7 +209,8 @@ bool is_valid(const Variant& v) {
         std::find(std::begin(kSided), std::end(kSided), v.sided) != std::end(kSided);
     const bool verts_ok = uses_verts(v) ? verts_in_range(v.verts) : v.verts == d.verts;
     const bool nodes_ok = uses_nodes(v) ? known_nodes(v.nodes) : v.nodes == d.nodes;
-    return has_family(v) && sided_ok && verts_ok && nodes_ok;
+    const bool precision_ok = uses_precision(v) || v.precision == d.precision;
+    return has_family(v) && sided_ok && verts_ok && nodes_ok && precision_ok;
 }
 
 std::string canonical_name(const Variant& v) {
@@ -202,6 +220,8 @@ std::string canonical_name(const Variant& v) {
     if (v.sided != d.sided) s += fmt::format(",sided={}", to_string(v.sided));
     if (uses_verts(v) && v.verts != d.verts) s += fmt::format(",verts={}", v.verts);
     if (uses_nodes(v) && v.nodes != d.nodes) s += fmt::format(",nodes={}", v.nodes);
+    if (uses_precision(v) && v.precision != d.precision)
+        s += fmt::format(",precision={}", to_string(v.precision));
     return s;
 }
 
@@ -217,11 +237,15 @@ std::vector<Variant> enumerate_variants() {
                 if (!uses_verts(base) && verts != kMinVerts) continue;
                 for (int nodes : kNodes) {
                     if (!uses_nodes(base) && nodes != kNodes[0]) continue;
-                    Variant v = base;
-                    v.sided = s;
-                    if (uses_verts(v)) v.verts = verts;
-                    if (uses_nodes(v)) v.nodes = nodes;
-                    out.push_back(v);
+                    for (Precision p : kPrecisions) {
+                        if (!uses_precision(base) && p != kPrecisions[0]) continue;
+                        Variant v = base;
+                        v.sided = s;
+                        if (uses_verts(v)) v.verts = verts;
+                        if (uses_nodes(v)) v.nodes = nodes;
+                        if (uses_precision(v)) v.precision = p;
+                        out.push_back(v);
+                    }
                 }
             }
         }
@@ -241,6 +265,7 @@ std::vector<std::pair<std::string, std::string>> variant_defines(const Variant& 
     d.emplace_back("AL_SIDED", v.sided == Sided::Any ? "0" : v.sided == Sided::One ? "1" : "2");
     if (uses_verts(v)) d.emplace_back("AL_MAX_VERTS", std::to_string(v.verts));
     if (uses_nodes(v)) d.emplace_back("AL_NODES", std::to_string(v.nodes));
+    d.emplace_back("AL_PRECISION_FP64", effective_precision(v) == Precision::Fp64 ? "1" : "0");
     return d;
 }
 
@@ -262,6 +287,8 @@ bool variant_matches(const Variant& v, const std::string& pattern) {
             actual = std::to_string(v.verts);
         else if (key == "nodes" && uses_nodes(v))
             actual = std::to_string(v.nodes);
+        else if (key == "precision")
+            actual = to_string(effective_precision(v));
         else
             return false;  // unknown, or a key this variant has no value for
         if (actual != value) return false;

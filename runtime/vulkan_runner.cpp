@@ -17,6 +17,21 @@ namespace {
 
 constexpr uint64_t kFenceTimeoutNs = 60ull * 1000 * 1000 * 1000;
 constexpr uint32_t kSpirvMagic = 0x07230203;
+constexpr uint32_t kOpCapability = 17;       // SPIR-V spec 3.42.2
+constexpr uint32_t kCapabilityFloat64 = 10;  // SPIR-V spec 3.31
+
+// Whether the module declares `capability`. OpCapability instructions come first
+// after the 5-word header (SPIR-V spec 2.4, logical layout), so the scan stops at
+// the first other instruction.
+bool spirv_declares_capability(const std::vector<uint32_t>& words, uint32_t capability) {
+    for (std::size_t i = 5; i < words.size();) {
+        const uint32_t count = words[i] >> 16, opcode = words[i] & 0xffffu;
+        if (opcode != kOpCapability || count < 2 || i + 1 >= words.size()) return false;
+        if (words[i + 1] == capability) return true;
+        i += count;
+    }
+    return false;
+}
 // Push constant block of the shader contract: uint count (offset 0), uint base (offset 4).
 struct PushConstants {
     uint32_t count;
@@ -192,6 +207,7 @@ struct VulkanRunner::Impl {
     VkPhysicalDeviceMemoryProperties memory_properties{};
     DeviceOwner device;
     uint32_t queue_family = 0;
+    bool float64 = false;  // shaderFloat64 supported and enabled
     VkQueue queue = VK_NULL_HANDLE;
     DeviceHandle<VkDescriptorSetLayout> set_layout;
     DeviceHandle<VkPipelineLayout> pipeline_layout;
@@ -315,9 +331,16 @@ bool VulkanRunner::Impl::init_device(const Reporter& report) {
     queue_info.queueFamilyIndex = queue_family;
     queue_info.queueCount = 1;
     queue_info.pQueuePriorities = &priority;
+    // fp64 variants (precision=fp64) need shaderFloat64; enable it wherever it exists.
+    VkPhysicalDeviceFeatures supported{};
+    vkGetPhysicalDeviceFeatures(physical, &supported);
+    VkPhysicalDeviceFeatures enabled{};
+    enabled.shaderFloat64 = supported.shaderFloat64;
+    float64 = supported.shaderFloat64 == VK_TRUE;
     auto device_info = vk_struct<VkDeviceCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO);
     device_info.queueCreateInfoCount = 1;
     device_info.pQueueCreateInfos = &queue_info;
+    device_info.pEnabledFeatures = &enabled;
     if (!report.check(vkCreateDevice(physical, &device_info, nullptr, &device.handle),
                       "vkCreateDevice")) {
         return false;
@@ -456,6 +479,11 @@ bool VulkanRunner::run(const std::vector<uint32_t>& spirv, const void* input,
     if (m.lost) return report.error("Vulkan runner unusable: an earlier fence wait timed out");
     if (spirv.size() < 5 || spirv[0] != kSpirvMagic) {
         return report.error("run: not a SPIR-V module (missing magic number)");
+    }
+    if (spirv_declares_capability(spirv, kCapabilityFloat64) && !m.float64) {
+        return report.error("device '" + std::string(m.properties.deviceName) +
+                            "' lacks shaderFloat64, which this shader needs (an fp64 variant: "
+                            "choose precision=fp32)");
     }
     if (input_bytes > 0 && input == nullptr) return report.error("run: input is null");
     if (count > std::numeric_limits<uint32_t>::max()) {

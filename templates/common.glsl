@@ -1,18 +1,21 @@
 // Shared vocabulary of every variant: the case record the host uploads, the
 // result record, and numerically careful helpers. Valid GLSL 4.50 and, through
-// the mirror prolog, C++ with GLM (one source of truth for both backends).
+// the mirror prolog, C++ with GLM (one source of truth for both backends). The
+// math is written over `real`/`rvec3` (the variant's precision), and the stitcher
+// gives every literal wrapped in AL_R the suffix of that precision (stitcher.cpp).
 
-const float AL_PI = 3.14159265358979f;
-const float AL_TWO_PI = 6.28318530717959f;
+const real AL_PI = AL_R(3.14159265358979323846);
+const real AL_TWO_PI = AL_R(6.28318530717958647692);
+const real AL_HALF_PI = AL_R(1.57079632679489661923);
 
-// One case, normalized on the host (CONTRACT.md 1), in double precision: p moved
-// to the origin, lengths divided by the light's distance, and the frame rotated
-// so that the light's centre lies on +z. Near the light, directions then differ
-// from the pole in small components that fp32 holds to full relative precision
-// (in a world frame the edges' distances to r would carry 6e-8 absolute error).
-// n, v unit; r = 2 (n.v) n - v formed on the host for the same reason. verts =
-// polygon vertices relative to the centre. params = (exponent or alpha,
-// two_sided, vertex count, 0). 208 bytes, std430.
+// One case, normalized on the host (CONTRACT.md 1), in double precision, then
+// rounded to fp32 for upload: p moved to the origin, lengths divided by the light's
+// distance, and the frame rotated so that the light's centre lies on +z. Near the
+// light, directions then differ from the pole in small components that fp32 holds
+// to full relative precision (in a world frame the edges' distances to r would
+// carry 6e-8 absolute error). n, v unit; r = 2 (n.v) n - v formed on the host for
+// the same reason. verts = polygon vertices relative to the centre. params =
+// (exponent or alpha, two_sided, vertex count, 0). 208 bytes, std430.
 struct AlCase {
     vec4 n;
     vec4 v;
@@ -22,68 +25,200 @@ struct AlCase {
     vec4 verts[8];
 };
 
-// atan(y / x) on [-1, 1]: argument reduction by pi/6 to |t| <= tan(pi/12), then
-// the odd Taylor series to t^13 (truncation < 2e-10 relative). Relative error a
-// few ulp, also for tiny t. Drivers' atan (lavapipe: 2e-5) is not accurate enough.
-float al_atan_unit(float t) {
-    float a = abs(t), base = 0.0f;
-    if (a > 0.26794919f) {
-        a = (a * 1.7320508f - 1.0f) / (a + 1.7320508f);
-        base = 0.52359878f;
+// Odd series 2 w (1 + w^2/3 + w^4/5 + ...) = log((1 + w) / (1 - w)) for |w| <= 0.172.
+// Truncation: fp64 to w^21 (< 1e-18 relative), fp32 to w^11 (< 4e-10).
+real al_log_ratio_series(real w) {
+    real w2 = w * w;
+#if AL_PRECISION_FP64
+    real s = AL_R(1.0) / AL_R(21.0);
+    s = s * w2 + AL_R(1.0) / AL_R(19.0);
+    s = s * w2 + AL_R(1.0) / AL_R(17.0);
+    s = s * w2 + AL_R(1.0) / AL_R(15.0);
+    s = s * w2 + AL_R(1.0) / AL_R(13.0);
+#else
+    real s = AL_R(1.0) / AL_R(13.0);
+#endif
+    s = s * w2 + AL_R(1.0) / AL_R(11.0);
+    s = s * w2 + AL_R(1.0) / AL_R(9.0);
+    s = s * w2 + AL_R(1.0) / AL_R(7.0);
+    s = s * w2 + AL_R(1.0) / AL_R(5.0);
+    s = s * w2 + AL_R(1.0) / AL_R(3.0);
+    s = s * w2 + real(1);
+    return AL_R(2.0) * w * s;
+}
+
+// atan(t) for |t| <= 1: argument reduction by pi/6 to |t| <= tan(pi/12), then the
+// odd Taylor series (truncation: fp64 to t^27, < 1e-18; fp32 to t^13, < 2e-10).
+// Relative error a few ulp, also for tiny t. Drivers' fp32 atan (lavapipe: 2e-5
+// relative) is not accurate enough, and GLSL has no fp64 atan.
+real al_atan_unit(real t) {
+    real a = abs(t), base = AL_R(0.0);
+    const real sqrt3 = AL_R(1.73205080756887729353);
+    if (a > AL_R(0.26794919243112270647)) {
+        a = (a * sqrt3 - AL_R(1.0)) / (a + sqrt3);
+        base = AL_R(0.52359877559829887308);
     }
-    float a2 = a * a;
-    float p = a * (1.0f + a2 * (-1.0f / 3.0f + a2 * (0.2f + a2 * (-1.0f / 7.0f + a2 * (1.0f / 9.0f +
-                  a2 * (-1.0f / 11.0f + a2 * (1.0f / 13.0f)))))));
-    return t < 0.0f ? -(base + p) : base + p;
+    real z = -a * a;
+#if AL_PRECISION_FP64
+    real p = AL_R(1.0) / AL_R(27.0);
+    p = p * z + AL_R(1.0) / AL_R(25.0);
+    p = p * z + AL_R(1.0) / AL_R(23.0);
+    p = p * z + AL_R(1.0) / AL_R(21.0);
+    p = p * z + AL_R(1.0) / AL_R(19.0);
+    p = p * z + AL_R(1.0) / AL_R(17.0);
+    p = p * z + AL_R(1.0) / AL_R(15.0);
+#else
+    real p = AL_R(1.0) / AL_R(15.0);
+#endif
+    p = p * z + AL_R(1.0) / AL_R(13.0);
+    p = p * z + AL_R(1.0) / AL_R(11.0);
+    p = p * z + AL_R(1.0) / AL_R(9.0);
+    p = p * z + AL_R(1.0) / AL_R(7.0);
+    p = p * z + AL_R(1.0) / AL_R(5.0);
+    p = p * z + AL_R(1.0) / AL_R(3.0);
+    p = p * z + real(1);
+    p *= a;
+    return t < AL_R(0.0) ? -(base + p) : base + p;
 }
 
 // atan2(y, x) in (-pi, pi], 0 for (0, 0). Error a few ulp (al_atan_unit).
-float al_atan2(float y, float x) {
-    float ax = abs(x), ay = abs(y);
-    if (ax == 0.0f && ay == 0.0f) return 0.0f;
-    float r = ay <= ax ? al_atan_unit(ay / ax) : 1.57079633f - al_atan_unit(ax / ay);
-    if (x < 0.0f) r = 3.14159265f - r;
-    return y < 0.0f ? -r : r;
+real al_atan2(real y, real x) {
+    real ax = abs(x), ay = abs(y);
+    if (ax == AL_R(0.0) && ay == AL_R(0.0)) return AL_R(0.0);
+    real r = ay <= ax ? al_atan_unit(ay / ax) : AL_HALF_PI - al_atan_unit(ax / ay);
+    if (x < AL_R(0.0)) r = AL_PI - r;
+    return y < AL_R(0.0) ? -r : r;
 }
 
 // Natural log for x > 0: frexp reduction to m in [sqrt(1/2), sqrt(2)), then
-// 2 atanh((m - 1)/(m + 1)) to the 11th power (truncation < 4e-10). Error a few ulp
-// (lavapipe's log: 7e-6 relative).
-float al_log(float x) {
+// log m = al_log_ratio_series((m - 1) / (m + 1)). Error a few ulp (lavapipe's fp32
+// log: 7e-6 relative; GLSL has no fp64 log).
+real al_log(real x) {
     int e;
-    float m = frexp(x, e);
-    if (m < 0.70710678f) {
-        m *= 2.0f;
+    real m = frexp(x, e);
+    if (m < AL_R(0.70710678118654752440)) {
+        m *= AL_R(2.0);
         e -= 1;
     }
-    float w = (m - 1.0f) / (m + 1.0f), w2 = w * w;
-    float s = 2.0f * w * (1.0f + w2 * (1.0f / 3.0f + w2 * (0.2f + w2 * (1.0f / 7.0f + w2 * (1.0f / 9.0f +
-                  w2 / 11.0f)))));
-    return float(e) * 0.69314718f + s;
+    return real(e) * AL_R(0.69314718055994530942) +
+           al_log_ratio_series((m - AL_R(1.0)) / (m + AL_R(1.0)));
 }
 
-// log(1 + z) for z in (-1, inf). Relative error ~1 ulp; for |z| < 1/4 the series
-// 2 atanh(z / (2 + z)) (5 terms, truncation < 3e-9 relative) avoids log(1 + z)'s cancellation.
-float al_log1p(float z) {
-    if (abs(z) < 0.25f) {
-        float w = z / (2.0f + z);
-        float w2 = w * w;
-        return 2.0f * w * (1.0f + w2 * (1.0f / 3.0f + w2 * (0.2f + w2 * (1.0f / 7.0f + w2 / 9.0f))));
-    }
-    return al_log(1.0f + z);
+// log(1 + z) for z in (-1, inf). Relative error ~1 ulp: for |z| < 1/4 the series in
+// z / (2 + z) (|w| <= 1/7) avoids the cancellation of log(1 + z).
+real al_log1p(real z) {
+    if (abs(z) < AL_R(0.25)) return al_log_ratio_series(z / (AL_R(2.0) + z));
+    return al_log(AL_R(1.0) + z);
 }
 
-// exp(z) - 1 for z <= 0 (used for 1 - x^k). Relative error a few ulp: Taylor to z^8
-// for |z| < 1/2 (truncation < 1e-9 relative), exp(z) - 1 beyond, where it cannot cancel.
-float al_expm1(float z) {
-    if (abs(z) < 0.5f) {
-        return z * (1.0f + z * (0.5f + z * (1.0f / 6.0f + z * (1.0f / 24.0f +
-                    z * (1.0f / 120.0f + z * (1.0f / 720.0f + z * (1.0f / 5040.0f + z / 40320.0f)))))));
+// exp(x), 0 below -745. fp32: the driver's (measured adequate). fp64 (GLSL has
+// none): x = k ln 2 + t, |t| <= ln2 / 2 with ln 2 split in two so t is exact to
+// rounding, Taylor to t^13 (truncation < 4e-18 relative), then ldexp.
+real al_exp(real x) {
+#if AL_PRECISION_FP64
+    if (x < AL_R(-745.0)) return AL_R(0.0);
+    x = min(x, AL_R(709.0));
+    real k = floor(x * AL_R(1.44269504088896340736) + AL_R(0.5));
+    real t = (x - k * AL_R(0.693145751953125)) - k * AL_R(1.42860682030941723212e-6);
+    real p = AL_R(1.0) / AL_R(6227020800.0);
+    p = p * t + AL_R(1.0) / AL_R(479001600.0);
+    p = p * t + AL_R(1.0) / AL_R(39916800.0);
+    p = p * t + AL_R(1.0) / AL_R(3628800.0);
+    p = p * t + AL_R(1.0) / AL_R(362880.0);
+    p = p * t + AL_R(1.0) / AL_R(40320.0);
+    p = p * t + AL_R(1.0) / AL_R(5040.0);
+    p = p * t + AL_R(1.0) / AL_R(720.0);
+    p = p * t + AL_R(1.0) / AL_R(120.0);
+    p = p * t + AL_R(1.0) / AL_R(24.0);
+    p = p * t + AL_R(1.0) / AL_R(6.0);
+    p = p * t + AL_R(0.5);
+    p = p * t + AL_R(1.0);
+    p = p * t + AL_R(1.0);
+    return ldexp(p, int(k));
+#else
+    return exp(x);
+#endif
+}
+
+// exp(z) - 1 for z <= 0 (used for 1 - x^k). Relative error a few ulp: Taylor for
+// |z| < 1/2 (fp64 to z^16, < 1e-18; fp32 to z^8, < 1e-9), exp(z) - 1 beyond,
+// where it cannot cancel.
+real al_expm1(real z) {
+    if (abs(z) < AL_R(0.5)) {
+#if AL_PRECISION_FP64
+        real p = AL_R(1.0) / AL_R(20922789888000.0);
+        p = p * z + AL_R(1.0) / AL_R(1307674368000.0);
+        p = p * z + AL_R(1.0) / AL_R(87178291200.0);
+        p = p * z + AL_R(1.0) / AL_R(6227020800.0);
+        p = p * z + AL_R(1.0) / AL_R(479001600.0);
+        p = p * z + AL_R(1.0) / AL_R(39916800.0);
+        p = p * z + AL_R(1.0) / AL_R(3628800.0);
+        p = p * z + AL_R(1.0) / AL_R(362880.0);
+#else
+        real p = AL_R(1.0) / AL_R(362880.0);
+#endif
+        p = p * z + AL_R(1.0) / AL_R(40320.0);
+        p = p * z + AL_R(1.0) / AL_R(5040.0);
+        p = p * z + AL_R(1.0) / AL_R(720.0);
+        p = p * z + AL_R(1.0) / AL_R(120.0);
+        p = p * z + AL_R(1.0) / AL_R(24.0);
+        p = p * z + AL_R(1.0) / AL_R(6.0);
+        p = p * z + AL_R(0.5);
+        p = p * z + AL_R(1.0);
+        return p * z;
     }
-    return exp(z) - 1.0f;
+    return al_exp(z) - AL_R(1.0);
+}
+
+// (sin x, cos x) for |x| <= pi. fp32: the driver's. fp64 (GLSL has none): x = q pi/2
+// + t with |t| <= pi/4 (pi/2 split in two), Taylor to t^17 / t^18 (truncation
+// < 1e-19), quadrant by q.
+rvec2 al_sincos(real x) {
+#if AL_PRECISION_FP64
+    real q = floor(x * AL_R(0.63661977236758134308) + AL_R(0.5));
+    real t = (x - q * AL_R(1.57079632673412561417)) - q * AL_R(6.07710050650619224932e-11);
+    real z = t * t;
+    real s = -AL_R(1.0) / AL_R(355687428096000.0);
+    s = s * z + AL_R(1.0) / AL_R(1307674368000.0);
+    s = s * z - AL_R(1.0) / AL_R(6227020800.0);
+    s = s * z + AL_R(1.0) / AL_R(39916800.0);
+    s = s * z - AL_R(1.0) / AL_R(362880.0);
+    s = s * z + AL_R(1.0) / AL_R(5040.0);
+    s = s * z - AL_R(1.0) / AL_R(120.0);
+    s = s * z + AL_R(1.0) / AL_R(6.0);
+    s = t - t * z * s;
+    real c = AL_R(1.0) / AL_R(6402373705728000.0);
+    c = c * z - AL_R(1.0) / AL_R(20922789888000.0);
+    c = c * z + AL_R(1.0) / AL_R(87178291200.0);
+    c = c * z - AL_R(1.0) / AL_R(479001600.0);
+    c = c * z + AL_R(1.0) / AL_R(3628800.0);
+    c = c * z - AL_R(1.0) / AL_R(40320.0);
+    c = c * z + AL_R(1.0) / AL_R(720.0);
+    c = c * z - AL_R(1.0) / AL_R(24.0);
+    c = c * z + AL_R(0.5);
+    c = AL_R(1.0) - z * c;
+    int quadrant = int(q) & 3;
+    if (quadrant == 0) return rvec2(s, c);
+    if (quadrant == 1) return rvec2(c, -s);
+    if (quadrant == 2) return rvec2(-s, -c);
+    return rvec2(-c, s);
+#else
+    return rvec2(sin(x), cos(x));
+#endif
+}
+
+// Orthonormal e1, e2 with (e1, e2, z) right-handed, for unit z (Duff et al. 2017,
+// "Building an orthonormal basis, revisited": branch-free, exact to rounding).
+void al_tangent_frame(rvec3 z, AL_INOUT(rvec3) e1, AL_INOUT(rvec3) e2) {
+    real sgn = z.z >= AL_R(0.0) ? AL_R(1.0) : AL_R(-1.0);
+    real a = AL_R(-1.0) / (sgn + z.z);
+    real b = z.x * z.y * a;
+    e1 = rvec3(AL_R(1.0) + sgn * z.x * z.x * a, sgn * b, -sgn * z.x);
+    e2 = rvec3(b, sgn + z.y * z.y * a, -z.y);
 }
 
 // Replaces NaN, infinities and negatives by 0: no bad value leaves a shader
-// (CONTRACT.md 2 asks for finite values >= 0 everywhere).
+// (CONTRACT.md 2 asks for finite values >= 0 everywhere). Results are fp32 at any
+// precision: a value beyond the fp32 range is thus caught here too.
 float al_clean(float x) { return (x >= 0.0f && x <= 3.0e38f) ? x : 0.0f; }
 vec4 al_clean(vec4 x) { return vec4(al_clean(x.x), al_clean(x.y), al_clean(x.z), al_clean(x.w)); }

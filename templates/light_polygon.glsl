@@ -8,12 +8,12 @@
 // Normals are carried through clipping rather than recomputed from short arcs,
 // where cross products of nearly equal fp32 directions lose their digits.
 struct AlPoly {
-    vec3 v[AL_POLY_CAP];
-    vec3 m[AL_POLY_CAP];
+    rvec3 v[AL_POLY_CAP];
+    rvec3 m[AL_POLY_CAP];
     int count;
 };
 
-void al_poly_push(AL_INOUT(AlPoly) P, vec3 v, vec3 m) {
+void al_poly_push(AL_INOUT(AlPoly) P, rvec3 v, rvec3 m) {
     if (P.count < AL_POLY_CAP) {
         P.v[P.count] = v;
         P.m[P.count] = m;
@@ -25,32 +25,32 @@ void al_poly_push(AL_INOUT(AlPoly) P, vec3 v, vec3 m) {
 // to rounding: the new vertex (dp Q - dq P) / (dp - dq) lies on arc PQ and on the
 // great circle c.w = 0 (dp - dq cannot cancel: opposite signs); the kept part of an
 // arc keeps its normal and the new arc along the clip circle has normal c.
-AlPoly al_clip(AlPoly P, vec3 c) {
+AlPoly al_clip(AlPoly P, rvec3 c) {
     AlPoly R;
     R.count = 0;
     for (int i = 0; i < AL_POLY_CAP; ++i) {
         if (i >= P.count) break;
-        vec3 a = P.v[i], b = P.v[i + 1 < P.count ? i + 1 : 0];
-        float da = dot(c, a), db = dot(c, b);
-        if (da >= 0.0f) al_poly_push(R, a, P.m[i]);
-        if ((da >= 0.0f) != (db >= 0.0f)) {
-            vec3 x = normalize((da * b - db * a) / (da - db));
-            al_poly_push(R, x, da >= 0.0f ? c : P.m[i]);
+        rvec3 a = P.v[i], b = P.v[i + 1 < P.count ? i + 1 : 0];
+        real da = dot(c, a), db = dot(c, b);
+        if (da >= AL_R(0.0)) al_poly_push(R, a, P.m[i]);
+        if ((da >= AL_R(0.0)) != (db >= AL_R(0.0))) {
+            rvec3 x = normalize((da * b - db * a) / (da - db));
+            al_poly_push(R, x, da >= AL_R(0.0) ? c : P.m[i]);
         }
     }
     return R;
 }
 
 // Length of arc i of P, in (0, pi): atan2 of the sine along the arc's own normal.
-float al_arc(AlPoly P, int i) {
-    vec3 a = P.v[i], b = P.v[i + 1 < P.count ? i + 1 : 0];
+real al_arc(AlPoly P, int i) {
+    rvec3 a = P.v[i], b = P.v[i + 1 < P.count ? i + 1 : 0];
     return al_atan2(dot(b, cross(P.m[i], a)), dot(a, b));
 }
 
 // Irradiance / pi of a clipped polygon: Lambert's formula sum_i arc_i (n . m_i) / (2 pi).
 // Exact to rounding.
-float al_polygon_diffuse(AlPoly P, vec3 n) {
-    float sum = 0.0f;
+real al_polygon_diffuse(AlPoly P, rvec3 n) {
+    real sum = AL_R(0.0);
     for (int i = 0; i < AL_POLY_CAP; ++i) {
         if (i >= P.count) break;
         sum += al_arc(P, i) * dot(n, P.m[i]);
@@ -60,34 +60,34 @@ float al_polygon_diffuse(AlPoly P, vec3 n) {
 
 // Which side of the light p (the origin) sees: +1 front, -1 back, 0 on its plane
 // or not emitting towards p (one-sided back face).
-float al_polygon_side(AlCase c) {
-    vec3 d0 = vec3(c.verts[0]), d1 = vec3(c.verts[1]), d2 = vec3(c.verts[2]);
-    float side = -dot(cross(d1 - d0, d2 - d0), vec3(c.center) + d0);
-    if (side == 0.0f) return 0.0f;
+real al_polygon_side(AlCase c) {
+    rvec3 d0 = rvec3(c.verts[0]), d1 = rvec3(c.verts[1]), d2 = rvec3(c.verts[2]);
+    real side = -dot(cross(d1 - d0, d2 - d0), rvec3(c.center) + d0);
+    if (side == AL_R(0.0)) return AL_R(0.0);
 #if AL_SIDED == 1
-    return side > 0.0f ? 1.0f : 0.0f;
+    return side > AL_R(0.0) ? AL_R(1.0) : AL_R(0.0);
 #elif AL_SIDED == 2
-    return side > 0.0f ? 1.0f : -1.0f;
+    return side > AL_R(0.0) ? AL_R(1.0) : -AL_R(1.0);
 #else
-    if (side > 0.0f) return 1.0f;
-    return c.params.y != 0.0f ? -1.0f : 0.0f;
+    if (side > AL_R(0.0)) return AL_R(1.0);
+    return c.params.y != 0.0f ? -AL_R(1.0) : AL_R(0.0);
 #endif
 }
 
 // The light as an AlPoly. Seen from the front the contract's counter-clockwise
 // order is clockwise from outside the sphere: reverse it. Edge normals come from
 // x_i x (x_(i+1) - x_i) with the edge vector taken from the offsets.
-AlPoly al_polygon_directions(AlCase c, float side) {
+AlPoly al_polygon_directions(AlCase c, real side) {
     AlPoly P;
     P.count = int(c.params.z);
-    vec3 center = vec3(c.center);
+    rvec3 center = rvec3(c.center);
     for (int i = 0; i < AL_MAX_VERTS; ++i) {
         if (i >= P.count) break;
-        int k = side > 0.0f ? P.count - 1 - i : i;
-        int k1 = side > 0.0f ? (k > 0 ? k - 1 : P.count - 1) : (k + 1 < P.count ? k + 1 : 0);
-        vec3 d = vec3(c.verts[k]);
+        int k = side > AL_R(0.0) ? P.count - 1 - i : i;
+        int k1 = side > AL_R(0.0) ? (k > 0 ? k - 1 : P.count - 1) : (k + 1 < P.count ? k + 1 : 0);
+        rvec3 d = rvec3(c.verts[k]);
         P.v[i] = normalize(center + d);
-        P.m[i] = normalize(cross(center + d, vec3(c.verts[k1]) - d));
+        P.m[i] = normalize(cross(center + d, rvec3(c.verts[k1]) - d));
     }
     return P;
 }
@@ -96,24 +96,24 @@ AlPoly al_polygon_directions(AlCase c, float side) {
 // Baseline: the polygon's centre as a point light of the same power, solid angle
 // ~ area cos(theta_l) / d^2. Error grows with the light's angular size; O(1), cheapest.
 vec4 al_shade(AlCase c) {
-    vec3 n = vec3(c.n);
-    float side = al_polygon_side(c);
-    if (side == 0.0f) return vec4(0.0f);
+    rvec3 n = rvec3(c.n);
+    real side = al_polygon_side(c);
+    if (side == AL_R(0.0)) return vec4(AL_R(0.0));
     int count = int(c.params.z);
-    vec3 area2 = vec3(0.0f);
-    vec3 d0 = vec3(c.verts[0]);
+    rvec3 area2 = rvec3(AL_R(0.0));
+    rvec3 d0 = rvec3(c.verts[0]);
     for (int i = 2; i < AL_MAX_VERTS; ++i) {
         if (i >= count) break;
-        area2 += cross(vec3(c.verts[i - 1]) - d0, vec3(c.verts[i]) - d0);
+        area2 += cross(rvec3(c.verts[i - 1]) - d0, rvec3(c.verts[i]) - d0);
     }
-    vec3 centre = vec3(c.center);
-    float d2 = dot(centre, centre);
-    vec3 w = centre * inversesqrt(d2);
-    float solid_angle = abs(dot(area2, w)) * 0.5f / d2;
-    float nw = max(dot(n, w), 0.0f);
-    float N = c.params.x;
-    float spec = al_phong_brdf(vec3(c.r), w, N) * nw * solid_angle;
-    return vec4(nw / AL_PI * solid_angle, spec, 0.0f, 0.0f);
+    rvec3 centre = rvec3(c.center);
+    real d2 = dot(centre, centre);
+    rvec3 w = centre * inversesqrt(d2);
+    real solid_angle = abs(dot(area2, w)) * AL_R(0.5) / d2;
+    real nw = max(dot(n, w), AL_R(0.0));
+    real N = real(c.params.x);
+    real spec = al_phong_brdf(rvec3(c.r), w, N) * nw * solid_angle;
+    return vec4(nw / AL_PI * solid_angle, spec, AL_R(0.0), AL_R(0.0));
 }
 #endif
 
@@ -122,35 +122,54 @@ vec4 al_shade(AlCase c) {
 // of n (diffuse), then by r's hemisphere ((r.w)_+ vanishes beyond), and sum the
 // boundary integrals of method_exact_phong.glsl.
 vec4 al_shade(AlCase c) {
-    vec3 n = vec3(c.n);
-    float side = al_polygon_side(c);
-    if (side == 0.0f) return vec4(0.0f);
-    float N = c.params.x;
-    vec3 r = vec3(c.r);
+    rvec3 n = rvec3(c.n);
+    real side = al_polygon_side(c);
+    if (side == AL_R(0.0)) return vec4(AL_R(0.0));
+    real N = real(c.params.x);
+    rvec3 r = rvec3(c.r);
     AlPoly lit = al_clip(al_polygon_directions(c, side), n);
-    float diffuse = al_polygon_diffuse(lit, n);
+    real diffuse = al_polygon_diffuse(lit, n);
     AlPoly D = al_clip(lit, r);
-    vec3 sums = vec3(0.0f);
-    bool inside = D.count >= 3;
-    float sweep_near = 0.0f, sweep_far = 0.0f, size_near = 0.0f, size_far = 0.0f;
+    // Azimuths about r of the vertices: each arc sweeps the wrapped difference of its
+    // ends' azimuths (|sweep| < pi: D lies in r's hemisphere), and the wraps count
+    // the winding number of D about r exactly.
+    rvec3 e1, e2;
+    al_tangent_frame(r, e1, e2);
+    real psi0 = D.count > 0 ? al_atan2(dot(D.v[0], e2), dot(D.v[0], e1)) : AL_R(0.0);
+    real psi_a = psi0;
+    rvec3 sums = rvec3(AL_R(0.0));
+    real wraps = AL_R(0.0);
+    real sweep_near = AL_R(0.0), sweep_far = AL_R(0.0), size_near = AL_R(0.0), size_far = AL_R(0.0);
     for (int i = 0; i < AL_POLY_CAP; ++i) {
         if (i >= D.count) break;
-        inside = inside && dot(D.m[i], r) >= 0.0f;
-        AlPhongEdge e = al_phong_edge(D.v[i], D.v[i + 1 < D.count ? i + 1 : 0], D.m[i], r, n, N);
+        bool last = i + 1 >= D.count;
+        rvec3 b = D.v[last ? 0 : i + 1];
+        real psi_b = last ? psi0 : al_atan2(dot(b, e2), dot(b, e1));
+        real sweep = psi_b - psi_a;
+        if (sweep > AL_PI) {
+            sweep -= AL_TWO_PI;
+            wraps += AL_R(1.0);
+        } else if (sweep < -AL_PI) {
+            sweep += AL_TWO_PI;
+            wraps -= AL_R(1.0);
+        }
+        psi_a = psi_b;
+        AlPhongEdge e = al_phong_edge(D.v[i], b, D.m[i], r, n, N);
         sums += e.sums;
         if (e.near_edge) {
-            sweep_near += e.sweep;
-            size_near += abs(e.sweep);
+            sweep_near += sweep;
+            size_near += abs(sweep);
         } else {
-            sweep_far += e.sweep;
-            size_far += abs(e.sweep);
+            sweep_far += sweep;
+            size_far += abs(sweep);
         }
     }
-    // 2 pi [r in D] - sum over near arcs of their sweep equals the far arcs' sweep:
-    // take whichever group cancels less.
-    float winding = size_near <= size_far ? (inside ? AL_TWO_PI : 0.0f) - sweep_near : sweep_far;
-    float moment = (winding - sums.x) / AL_TWO_PI;
-    float specular = (dot(r, n) * (winding - sums.y) + sums.z) / AL_TWO_PI;
-    return vec4(diffuse, specular, moment, 0.0f);
+    // The sweeps total -2 pi wraps (the winding number about r, 0 or 1 for a convex
+    // D): so 2 pi winding - (near sweeps) equals the far sweeps. Take whichever group
+    // cancels less.
+    real winding = size_near <= size_far ? -AL_TWO_PI * wraps - sweep_near : sweep_far;
+    real moment = (winding - sums.x) / AL_TWO_PI;
+    real specular = (dot(r, n) * (winding - sums.y) + sums.z) / AL_TWO_PI;
+    return vec4(diffuse, specular, moment, AL_R(0.0));
 }
 #endif

@@ -1,5 +1,6 @@
 // Shader variants against the oracle, with one test body run over both backends
 // (the CPU mirror and the SPIR-V on lavapipe), and the two backends against each other.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <map>
@@ -15,13 +16,21 @@ using namespace arealight::test;
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-// fp32 evaluation of an exact method: the acceptance bar of the exact variant.
-constexpr double kExactTol = 1e-4;
-// The two backends run the same math in fp32; they differ in sin/cos/exp and in
-// operation order. Measured worst over these 200 random cases: 1.9e-5 (the diffuse
-// of a small polygon, where Lambert's edge sum cancels); on the public phong
-// polygon cases 2.0e-5. Issue 4 asks for 1e-5: not reached yet.
-constexpr double kBackendTol = 3e-5;
+// The acceptance bar of the exact variant (issue 4): p95 and max of the relative
+// error against the oracle (floor 1e-3). The fp64 default must meet it; what is left
+// is the fp32 rounding of the uploaded case (measured on these cases: p95 3.7e-7,
+// max 5.2e-6).
+constexpr double kExactP95Tol = 1e-5;
+constexpr double kExactMaxTol = 1e-4;
+// precision=fp32: the O(1) boundary terms of a small result cancel in fp32 (measured
+// on these cases: p95 3.6e-6, max 4.5e-5); its bar is the max alone.
+constexpr double kExactFp32MaxTol = 1e-4;
+// The two backends run the same math. In fp64 every operation is IEEE-rounded and
+// the transcendentals are the templates' own, so they agree to rounding (measured:
+// bit-identical; the bar is issue 4's). In fp32 the drivers' sin/cos/exp differ
+// (measured worst 2.1e-5 on these cases, a moment of 1.5e-4).
+constexpr double kBackendTol = 1e-5;
+constexpr double kBackendFp32Tol = 3e-5;
 
 Evaluator& evaluator(Backend b) {
     static std::map<Backend, std::unique_ptr<Evaluator>> cache;
@@ -93,29 +102,44 @@ TEST_CASE("exact Phong on polygons matches the oracle on both backends", "[shadi
     const CaseSet cases = random_phong_polygons(4242, 120);
     std::map<std::string, CaseResult> ref;
     for (const auto& c : cases.cases) ref[c.id] = reference_case(c, {});
-    for (Backend b : {Backend::Cpu, Backend::Vulkan}) {
-        const ResultSet out = run(b, "dist=phong,method=exact,light=polygon", cases);
-        REQUIRE(out.results.size() == cases.cases.size());
-        double worst = 0;
-        std::string worst_id;
-        for (const auto& r : out.results) {
-            const auto& o = ref.at(r.id);
-            for (auto [x, y] : {std::pair{*r.diffuse, *o.diffuse},
-                                {*r.specular, *o.specular},
-                                {*r.moment, *o.moment}}) {
-                if (rel_err(x, y) > worst) worst = rel_err(x, y), worst_id = r.id;
+    struct Bar {
+        const char* variant;
+        double p95, max;
+    };
+    for (const Bar& bar : {Bar{"dist=phong,method=exact,light=polygon", kExactP95Tol, kExactMaxTol},
+                           Bar{"dist=phong,method=exact,light=polygon,precision=fp32",
+                               kExactFp32MaxTol, kExactFp32MaxTol}}) {
+        for (Backend b : {Backend::Cpu, Backend::Vulkan}) {
+            const ResultSet out = run(b, bar.variant, cases);
+            REQUIRE(out.results.size() == cases.cases.size());
+            std::vector<double> errors;
+            double worst = 0;
+            std::string worst_id;
+            for (const auto& r : out.results) {
+                const auto& o = ref.at(r.id);
+                for (auto [x, y] : {std::pair{*r.diffuse, *o.diffuse},
+                                    {*r.specular, *o.specular},
+                                    {*r.moment, *o.moment}}) {
+                    errors.push_back(rel_err(x, y));
+                    if (errors.back() > worst) worst = errors.back(), worst_id = r.id;
+                }
             }
+            std::sort(errors.begin(), errors.end());
+            const double p95 = errors[static_cast<std::size_t>(0.95 * (errors.size() - 1))];
+            INFO(bar.variant << ", backend " << to_string(b) << ": p95 " << p95 << ", worst "
+                             << worst << " at " << worst_id);
+            CHECK(p95 <= bar.p95);
+            CHECK(worst <= bar.max);
         }
-        INFO("backend " << to_string(b) << ": worst relative error " << worst << " at "
-                        << worst_id);
-        CHECK(worst <= kExactTol);
     }
 }
 
 TEST_CASE("CPU mirror and lavapipe agree on every case", "[shading][vulkan]") {
     const CaseSet cases = random_phong_polygons(777, 200);
-    for (const char* name :
-         {"dist=phong,method=exact,light=polygon", "dist=phong,method=point,light=polygon"}) {
+    for (auto [name, tol] :
+         {std::pair{"dist=phong,method=exact,light=polygon", kBackendTol},
+          {"dist=phong,method=exact,light=polygon,precision=fp32", kBackendFp32Tol},
+          {"dist=phong,method=point,light=polygon", kBackendFp32Tol}}) {
         const ResultSet cpu = run(Backend::Cpu, name, cases);
         const ResultSet gpu = run(Backend::Vulkan, name, cases);
         REQUIRE(cpu.results.size() == gpu.results.size());
@@ -135,7 +159,7 @@ TEST_CASE("CPU mirror and lavapipe agree on every case", "[shading][vulkan]") {
             if (a.moment) track("moment", *g.moment, *a.moment);
         }
         INFO(name << ": worst CPU/GPU relative difference " << worst << " at " << where);
-        CHECK(worst <= kBackendTol);
+        CHECK(worst <= tol);
     }
 }
 
@@ -168,8 +192,8 @@ TEST_CASE("exact Phong: two-sided symmetry, back faces, exponent extremes", "[sh
             CHECK(*bk.specular == 0.0);
             CHECK(rel_err(*t.specular, *f.specular) <= kBackendTol);
             CHECK(rel_err(*t.moment, *f.moment) <= kBackendTol);
-            CHECK(rel_err(*f.specular, *ref.specular) <= kExactTol);
-            CHECK(rel_err(*f.moment, *ref.moment) <= kExactTol);
+            CHECK(rel_err(*f.specular, *ref.specular) <= kExactMaxTol);
+            CHECK(rel_err(*f.moment, *ref.moment) <= kExactMaxTol);
         }
     }
 }

@@ -94,8 +94,9 @@ TEST_CASE("enumeration: every variant valid, unique, and round-trips", "[variant
     const auto all = enumerate_variants();
     const std::size_t sided = 3;  // any, one, two
     const std::size_t verts = 8 - 3 + 1;
-    const std::size_t nodes = 4;  // 8, 12, 16, 24
-    const std::size_t phong_exact_polygon = sided * verts * nodes;
+    const std::size_t nodes = 4;      // 8, 12, 16, 24
+    const std::size_t precision = 2;  // fp64, fp32
+    const std::size_t phong_exact_polygon = sided * verts * nodes * precision;
     const std::size_t phong_point_polygon = sided * verts;
     INFO("enumerated " << all.size());
     CHECK(all.size() == phong_exact_polygon + phong_point_polygon);
@@ -112,10 +113,12 @@ TEST_CASE("enumeration: every variant valid, unique, and round-trips", "[variant
     }
     CHECK(names.size() == all.size());
 
-    // Fixed order: family first, then sided, verts, nodes.
-    REQUIRE(all.size() >= 2);
+    // Fixed order: family first, then sided, verts, nodes, precision.
+    REQUIRE(all.size() >= 3);
     CHECK(canonical_name(all.front()) == "dist=phong,method=exact,light=polygon,verts=3,nodes=8");
-    CHECK(canonical_name(all[1]) == "dist=phong,method=exact,light=polygon,verts=3,nodes=12");
+    CHECK(canonical_name(all[1]) ==
+          "dist=phong,method=exact,light=polygon,verts=3,nodes=8,precision=fp32");
+    CHECK(canonical_name(all[2]) == "dist=phong,method=exact,light=polygon,verts=3,nodes=12");
     CHECK(canonical_name(all.back()) == "dist=phong,method=point,light=polygon,sided=two");
     CHECK(enumerate_variants() == all);
 }
@@ -136,6 +139,29 @@ TEST_CASE("validity: implemented family, keys in range, unused keys at default",
     CHECK(is_valid(v));
     v.nodes = 24;  // names the same shader as nodes=16 would: only one of them is valid
     CHECK_FALSE(is_valid(v));
+    v = Variant{};
+    v.precision = Precision::Fp32;
+    CHECK(is_valid(v));
+    v.method = Method::Point;  // fp32 only: its precision key keeps the default
+    CHECK_FALSE(is_valid(v));
+}
+
+TEST_CASE("precision: fp64 by default for method=exact, fp32 for the rest", "[variant]") {
+    const Variant d = parse_ok("dist=phong,method=exact,light=polygon");
+    CHECK(d.precision == Precision::Fp64);
+    CHECK(effective_precision(d) == Precision::Fp64);
+    const Variant f = parse_ok("dist=phong,method=exact,light=polygon,precision=fp32");
+    CHECK(f.precision == Precision::Fp32);
+    CHECK(canonical_name(f) == "dist=phong,method=exact,light=polygon,precision=fp32");
+    CHECK(canonical_name(parse_ok("dist=phong,method=exact,light=polygon,precision=fp64")) ==
+          "dist=phong,method=exact,light=polygon");
+    const Variant p = parse_ok("dist=phong,method=point,light=polygon");
+    CHECK(effective_precision(p) == Precision::Fp32);
+    CHECK_THAT(
+        error_of("dist=phong,method=exact,light=polygon,precision=fp16"),
+        Catch::Matchers::Contains("key 'precision': unknown value 'fp16' (expected fp64, fp32)"));
+    CHECK_THAT(error_of("dist=phong,method=point,light=polygon,precision=fp32"),
+               Catch::Matchers::Contains("key 'precision' applies to method=exact only"));
 }
 
 TEST_CASE("bad variant names are rejected naming the key", "[variant]") {
@@ -199,16 +225,15 @@ TEST_CASE("defines name the chosen values and only the keys that apply", "[varia
         parse_ok("dist=phong,method=exact,light=polygon,sided=one,verts=4,nodes=12");
     const Defines want_exact = {{"AL_DIST_PHONG", "1"},    {"AL_METHOD_EXACT", "1"},
                                 {"AL_LIGHT_POLYGON", "1"}, {"AL_SIDED", "1"},
-                                {"AL_MAX_VERTS", "4"},     {"AL_NODES", "12"}};
+                                {"AL_MAX_VERTS", "4"},     {"AL_NODES", "12"},
+                                {"AL_PRECISION_FP64", "1"}};
     INFO("exact: " << show(variant_defines(exact)));
     CHECK(variant_defines(exact) == want_exact);
 
     const Variant point = parse_ok("dist=phong,method=point,light=polygon,sided=two");
-    const Defines want_point = {{"AL_DIST_PHONG", "1"},
-                                {"AL_METHOD_POINT", "1"},
-                                {"AL_LIGHT_POLYGON", "1"},
-                                {"AL_SIDED", "2"},
-                                {"AL_MAX_VERTS", "8"}};
+    const Defines want_point = {{"AL_DIST_PHONG", "1"},    {"AL_METHOD_POINT", "1"},
+                                {"AL_LIGHT_POLYGON", "1"}, {"AL_SIDED", "2"},
+                                {"AL_MAX_VERTS", "8"},     {"AL_PRECISION_FP64", "0"}};
     INFO("point: " << show(variant_defines(point)));
     CHECK(variant_defines(point) == want_point);
 
@@ -239,6 +264,9 @@ TEST_CASE("pattern matching compares effective values", "[variant]") {
     const Variant p = parse_ok("dist=phong,method=point,light=polygon");
     CHECK(variant_matches(p, "method=point,verts=8"));
     CHECK_FALSE(variant_matches(p, "nodes=16"));
+    // Precision always has an effective value: fp32 for a method without the key.
+    CHECK(variant_matches(p, "precision=fp32"));
+    CHECK(variant_matches(d, "precision=fp64"));
 
     std::size_t exact = 0, point = 0, all = 0;
     for (const auto& e : enumerate_variants()) {
@@ -248,6 +276,6 @@ TEST_CASE("pattern matching compares effective values", "[variant]") {
     }
     INFO("all " << all << ", exact sided=two " << exact << ", point verts=3 " << point);
     CHECK(all == enumerate_variants().size());
-    CHECK(exact == 6 * 4);
+    CHECK(exact == 6 * 4 * 2);
     CHECK(point == 3);
 }

@@ -16,6 +16,10 @@ namespace arealight {
 enum class Method { Exact, Point };
 // Any honours each case's two_sided flag at run time; One and Two compile it in.
 enum class Sided { Any, One, Two };
+// Arithmetic precision of the shader math. method=exact, the in-shader accuracy
+// reference, defaults to fp64 (fp32 input rounding then dominates its error) and
+// offers fp32; every other method is fp32 only for now.
+enum class Precision { Fp32, Fp64 };
 
 struct Variant {
     Distribution dist = Distribution::Phong;
@@ -24,16 +28,21 @@ struct Variant {
     Sided sided = Sided::Any;
     int verts = 8;   // polygon: largest polygon compiled in, 3..8
     int nodes = 16;  // method=exact: Gauss-Legendre nodes per edge, 8/12/16/24
+    Precision precision = Precision::Fp64;  // method=exact: fp64 or fp32
 
     bool operator==(const Variant& o) const {
         return dist == o.dist && method == o.method && light == o.light && sided == o.sided &&
-               verts == o.verts && nodes == o.nodes;
+               verts == o.verts && nodes == o.nodes && precision == o.precision;
     }
     bool operator!=(const Variant& o) const { return !(*this == o); }
 };
 
 const char* to_string(Method m);
 const char* to_string(Sided s);
+const char* to_string(Precision p);
+
+// The precision a variant's shader computes in: its key where it has one, else fp32.
+Precision effective_precision(const Variant& v);
 
 // Parses "key=value,..."; dist, method and light are required, every other key
 // has a default. Errors name the key (unknown, bad value, duplicate, missing,
@@ -57,7 +66,8 @@ std::vector<std::pair<std::string, std::string>> variant_defines(const Variant& 
 
 // True when every key=value of `pattern` (a partial name; empty matches all)
 // equals the variant's effective value, defaults included. A key the variant
-// does not use (nodes for method=point) has no value and so never matches, and
+// does not use (nodes for method=point) has no value and so never matches, except
+// precision, whose effective value (effective_precision) every variant has; and
 // an invalid pattern matches nothing.
 bool variant_matches(const Variant& v, const std::string& pattern);
 
