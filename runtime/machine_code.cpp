@@ -35,10 +35,13 @@ bool count_elf(const std::vector<unsigned char>& elf, csh handle, MachineCodeSta
         std::memcpy(&sh, elf.data() + eh.e_shoff + i * sizeof(Elf64_Shdr), sizeof sh);
         if (!(sh.sh_flags & SHF_EXECINSTR) || sh.sh_type != SHT_PROGBITS) continue;
         if (sh.sh_offset + sh.sh_size > elf.size()) return false;
+        // Skip-data mode: Capstone otherwise stops at the first byte run it cannot
+        // decode (measured: ~700 of 44 000 instructions counted); skipped runs come
+        // back as pseudo-instructions with id 0 and are not counted.
         cs_insn* insn = nullptr;
         const size_t n = cs_disasm(handle, elf.data() + sh.sh_offset, sh.sh_size, 0, 0, &insn);
+        for (size_t k = 0; k < n; ++k) stats.instructions += insn[k].id != 0;
         if (insn) cs_free(insn, n);
-        stats.instructions += n;
         stats.bytes += sh.sh_size;
     }
     ++stats.objects;
@@ -82,7 +85,8 @@ std::vector<fs::path> cache_entries(const std::string& cache_dir) {
 std::optional<MachineCodeStats> count_files(const std::vector<fs::path>& files,
                                             const DiagnosticConsumer& diag) {
     csh handle;
-    if (cs_open(CS_ARCH_X86, CS_MODE_64, &handle) != CS_ERR_OK) {
+    if (cs_open(CS_ARCH_X86, CS_MODE_64, &handle) != CS_ERR_OK ||
+        cs_option(handle, CS_OPT_SKIPDATA, CS_OPT_ON) != CS_ERR_OK) {
         if (diag) diag({Severity::Error, "", 0, "capstone: cannot open an x86-64 disassembler"});
         return std::nullopt;
     }
