@@ -80,11 +80,10 @@ void emit_defines(std::string& out, const Variant& v) {
 
 // Gauss-Legendre tables for AL_NODES at the working precision, with enough digits
 // to round-trip a double.
-void emit_tables(std::string& out, const Variant& v, Language lang) {
+void emit_tables(std::string& out, const Variant& v, Language lang, const std::string& suffix) {
     if (v.method != Method::Exact) return;
     std::vector<double> x, w;
     gauss_legendre(v.nodes, x, w);
-    const std::string suffix = literal_suffix(v, lang);
     auto table = [&](const char* name, const std::vector<double>& values) {
         std::string items;
         for (double d : values)
@@ -135,8 +134,8 @@ std::string generate_source(const Variant& v, Language lang, const TemplateLooku
     emit_banner(out, v, lang);
     emit_language_macros(out, v, lang);
     emit_defines(out, v);
-    emit_tables(out, v, lang);
     const std::string suffix = literal_suffix(v, lang);
+    emit_tables(out, v, lang, suffix);
     for (const auto& path : variant_templates(v, lang)) emit_template(out, path, lookup, suffix);
     return out;
 }
