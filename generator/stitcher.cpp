@@ -116,8 +116,13 @@ void emit_template(std::string& out, const std::string& path, const TemplateLook
 std::vector<std::string> variant_templates(const Variant& v, Language lang) {
     std::vector<std::string> files = {"templates/common.glsl"};
     files.push_back(std::string("templates/dist_") + to_string(v.dist) + ".glsl");
-    if (v.method == Method::Exact) {
-        files.push_back(std::string("templates/method_exact_") + to_string(v.dist) + ".glsl");
+    // Boundary-integral methods share the per-arc geometry, then integrate each edge
+    // their own way.
+    if (v.method != Method::Point) {
+        files.push_back(std::string("templates/") + to_string(v.dist) + "_edge.glsl");
+        const bool peak = v.method == Method::Lorentz || v.method == Method::Ellipsoid;
+        files.push_back(std::string("templates/method_") + (peak ? "peak" : to_string(v.method)) +
+                        "_" + to_string(v.dist) + ".glsl");
     }
     files.push_back(std::string("templates/light_") + to_string(v.light) + ".glsl");
     if (lang == Language::Glsl) files.push_back("templates/entry.glsl");

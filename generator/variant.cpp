@@ -13,7 +13,7 @@ namespace {
 
 const Distribution kDists[] = {Distribution::Phong, Distribution::Blinn, Distribution::Beckmann,
                                Distribution::Ggx};
-const Method kMethods[] = {Method::Exact, Method::Point};
+const Method kMethods[] = {Method::Exact, Method::Lorentz, Method::Ellipsoid, Method::Point};
 const LightType kLights[] = {LightType::Polygon, LightType::Disk, LightType::Sphere,
                              LightType::Ellipsoid};
 const Sided kSided[] = {Sided::Any, Sided::One, Sided::Two};
@@ -31,6 +31,8 @@ struct Family {
 };
 const Family kFamilies[] = {
     {Distribution::Phong, Method::Exact, LightType::Polygon},
+    {Distribution::Phong, Method::Lorentz, LightType::Polygon},
+    {Distribution::Phong, Method::Ellipsoid, LightType::Polygon},
     {Distribution::Phong, Method::Point, LightType::Polygon},
 };
 
@@ -108,7 +110,17 @@ std::optional<std::vector<std::pair<std::string, std::string>>> split(const std:
 }  // namespace
 
 const char* to_string(Method m) {
-    return m == Method::Exact ? "exact" : "point";
+    switch (m) {
+        case Method::Exact:
+            return "exact";
+        case Method::Lorentz:
+            return "lorentz";
+        case Method::Ellipsoid:
+            return "ellipsoid";
+        case Method::Point:
+            return "point";
+    }
+    return "exact";
 }
 const char* to_string(Precision p) {
     return p == Precision::Fp64 ? "fp64" : "fp32";

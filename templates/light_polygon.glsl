@@ -117,10 +117,11 @@ vec4 al_shade(AlCase c) {
 }
 #endif
 
-#ifdef AL_METHOD_EXACT
-// Exact diffuse, specular and moment (CONTRACT.md 2) for Phong: clip by the horizon
-// of n (diffuse), then by r's hemisphere ((r.w)_+ vanishes beyond), and sum the
-// boundary integrals of method_exact_phong.glsl.
+#ifndef AL_METHOD_POINT
+// Diffuse, specular and moment (CONTRACT.md 2) for Phong by boundary integrals:
+// clip by the horizon of n (diffuse, exact), then by r's hemisphere ((r.w)_+
+// vanishes beyond), and sum the per-arc terms of the method's al_phong_edge
+// (method_exact_phong.glsl: quadrature; method_peak_phong.glsl: peak functions).
 vec4 al_shade(AlCase c) {
     rvec3 n = rvec3(c.n);
     real side = al_polygon_side(c);

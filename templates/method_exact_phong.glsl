@@ -30,39 +30,16 @@
 // sum of O(1) boundary terms and fp32 holds them to ~6e-8 absolute.
 // Cost: O(AL_NODES) per edge, independent of N.
 
-// One arc's share of the boundary sums. The azimuth swept about r is not here:
-// the driver forms it from per-vertex azimuths, so that its signed total is
-// exactly 2 pi times the winding number and rounding cancels between the arcs
-// that share a vertex.
-struct AlPhongEdge {
-    rvec3 sums;  // far: (r.m) T_(N+1), (r.m) T_N; near: -(r.m) int G_(N+1), -(r.m) int G_N;
-                 // z: (n.m) int x^N dtau. Then T_k = [near] sweep + sums.
-    bool near_edge;
-};
-
-// Per-arc sums for the arc a -> b with inward unit normal m. D lies in r's
-// hemisphere, so x = r.u >= 0 on the arc and tau stays in [-pi/2, pi/2].
+// Per-arc sums for the arc a -> b with inward unit normal m (phong_edge.glsl).
 AlPhongEdge al_phong_edge(rvec3 a, rvec3 b, rvec3 m, rvec3 r, rvec3 n, real N) {
-    real rm = dot(r, m);
-    real s = abs(rm);
-    rvec3 foot = r - rm * m;
-    real c = length(foot);
-    // Edge on r's great circle of horizon: x = 0 everywhere, any foot works.
-    rvec3 f = c > AL_R(1e-6) ? foot / c : a;
-    rvec3 g = cross(m, f);  // tau = atan(u.g, u.f), increasing from a to b
-    real ag = dot(a, g), bg = dot(b, g);
+    AlEdgeFrame E = al_edge_frame(a, b, m, r, N, AL_R(-6.9));  // x^(N+1) >= 1e-3
+    real s = E.s;
     real sigma = sqrt(s * s + AL_R(4.0) / N);
     // xi = atan(tan(tau) / sigma) at the ends, straight from the components.
-    real xa = al_atan2(ag, sigma * dot(a, f));
-    real xb = al_atan2(bg, sigma * dot(b, f));
+    real xa = al_atan2(E.ag, sigma * E.af);
+    real xb = al_atan2(E.bg, sigma * E.bf);
     real half_width = AL_R(0.5) * (xb - xa), mid = AL_R(0.5) * (xa + xb);
-    // Near form only where the arc meets the lobe: its great circle passes within
-    // ~2/sqrt(N) of r and x^(N+1) on the arc reaches 1e-3 (x's maximum is c at the
-    // foot if the arc holds it, else at an end). Elsewhere the near form's swept
-    // azimuth would cancel against its smooth part to a tiny T, losing its digits.
-    real x_max = ag <= AL_R(0.0) && bg >= AL_R(0.0) ? c : max(dot(r, a), dot(r, b));
-    bool far_edge = N * s * s > AL_R(4.0) ||
-                    (N + AL_R(1.0)) * al_log(max(x_max, AL_R(1e-30))) < AL_R(-6.9);
+    bool far_edge = E.far_edge;
     real k1 = N + AL_R(1.0);
     rvec3 acc = rvec3(AL_R(0.0));
     for (int j = 0; j < AL_NODES; ++j) {
@@ -87,6 +64,6 @@ AlPhongEdge al_phong_edge(rvec3 a, rvec3 b, rvec3 m, rvec3 r, rvec3 n, real N) {
     AlPhongEdge e;
     e.near_edge = !far_edge;
     real sgn = far_edge ? AL_R(1.0) : AL_R(-1.0);
-    e.sums = rvec3(sgn * rm * acc.x, sgn * rm * acc.y, dot(n, m) * acc.z);
+    e.sums = rvec3(sgn * E.rm * acc.x, sgn * E.rm * acc.y, dot(n, m) * acc.z);
     return e;
 }

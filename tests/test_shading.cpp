@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <random>
 
 #include "arealight/evaluator.hpp"
@@ -233,4 +234,100 @@ TEST_CASE("every listed variant compiles, validates and runs on lavapipe (1/2)",
 TEST_CASE("every listed variant compiles, validates and runs on lavapipe (2/2)",
           "[shading][vulkan]") {
     check_variants_run(1);
+}
+
+namespace {
+
+// relL2 of one quantity over a result set, the metric of shared/tools/score.
+double rel_l2(const ResultSet& out, const std::map<std::string, CaseResult>& ref,
+              std::optional<double> CaseResult::*q) {
+    double num = 0, den = 0;
+    for (const auto& r : out.results) {
+        const double x = *(r.*q), y = *(ref.at(r.id).*q);
+        num += (x - y) * (x - y);
+        den += y * y;
+    }
+    return std::sqrt(num / den);
+}
+
+// Measured on these 120 cases (both backends): moment relL2 ellipsoid 7.2e-3,
+// lorentz 7.6e-3; specular 7.9e-3 / 8.3e-3. The bar leaves 2x; issue 5's goal
+// (1e-3) is far below it.
+constexpr double kPeakRelL2Tol = 1.5e-2;
+// The fits' clamps and the near/far choice are branch points, so fp32 rounding
+// differences between the backends can grow past one ulp; measured worst 1.8e-5 on
+// these cases, 9.3e-5 (specular of N = 1.4) over 600 other random cases.
+constexpr double kPeakBackendTol = 2e-4;
+
+}  // namespace
+
+TEST_CASE("peak-function methods: bounded error on random polygons, backends agree",
+          "[shading][vulkan]") {
+    const CaseSet cases = random_phong_polygons(4242, 120);
+    std::map<std::string, CaseResult> ref;
+    for (const auto& c : cases.cases) ref[c.id] = reference_case(c, {});
+    for (const char* name :
+         {"dist=phong,method=ellipsoid,light=polygon", "dist=phong,method=lorentz,light=polygon"}) {
+        std::map<Backend, ResultSet> out;
+        for (Backend b : {Backend::Cpu, Backend::Vulkan}) {
+            out[b] = run(b, name, cases);
+            REQUIRE(out[b].results.size() == cases.cases.size());
+            const double moment = rel_l2(out[b], ref, &CaseResult::moment);
+            const double specular = rel_l2(out[b], ref, &CaseResult::specular);
+            INFO(name << " on " << to_string(b) << ": relL2 moment " << moment << ", specular "
+                      << specular);
+            CHECK(moment <= kPeakRelL2Tol);
+            CHECK(specular <= kPeakRelL2Tol);
+            for (const auto& r : out[b].results) {
+                INFO(r.id);
+                CHECK(*r.moment >= 0.0);
+                CHECK(*r.specular >= 0.0);
+            }
+        }
+        double worst = 0;
+        for (std::size_t i = 0; i < cases.cases.size(); ++i) {
+            const auto &c = out[Backend::Cpu].results[i], &g = out[Backend::Vulkan].results[i];
+            worst =
+                std::max({worst, rel_err(*g.specular, *c.specular), rel_err(*g.moment, *c.moment)});
+        }
+        INFO(name << ": worst CPU/GPU relative difference " << worst);
+        CHECK(worst <= kPeakBackendTol);
+    }
+}
+
+TEST_CASE("peak-function methods: finite and non-negative at the extremes", "[shading][vulkan]") {
+    // Exponents 1, 1.5, 2, 1e5; lights straight along r (c -> 1 on every edge),
+    // grazing r's horizon (c -> 0), tiny and nearly hemisphere-filling.
+    glm::dvec3 n(0, 0, 1), v = glm::normalize(glm::dvec3(0.4, 0.0, 0.9));
+    glm::dvec3 r = 2 * v.z * n - v;
+    glm::dvec3 t1 = glm::normalize(glm::cross(r, glm::dvec3(0, 1, 0))), t2 = glm::cross(r, t1);
+    CaseSet set;
+    int id = 0;
+    for (double N : {1.0, 1.5, 2.0, 1e5}) {
+        for (double rad : {1e-4, 0.3, 30.0}) {
+            for (double offset : {0.0, 0.5 * rad, 1.5 * rad}) {
+                std::vector<glm::dvec3> quad;
+                for (int j = 0; j < 4; ++j) {
+                    const double a = -kPi / 2 * j;
+                    quad.push_back(2.0 * r + offset * t1 +
+                                   rad * (std::cos(a) * t1 + std::sin(a) * t2));
+                }
+                set.cases.push_back(polygon_case("x" + std::to_string(id++), quad, n, v,
+                                                 Distribution::Phong, N, true));
+            }
+        }
+    }
+    for (const char* name :
+         {"dist=phong,method=ellipsoid,light=polygon", "dist=phong,method=lorentz,light=polygon"}) {
+        for (Backend b : {Backend::Cpu, Backend::Vulkan}) {
+            for (const auto& res : run(b, name, set).results) {
+                INFO(name << " " << to_string(b) << " " << res.id << ": moment " << *res.moment
+                          << ", specular " << *res.specular);
+                CHECK(std::isfinite(*res.moment));
+                CHECK(std::isfinite(*res.specular));
+                CHECK(*res.moment >= 0.0);
+                CHECK(*res.specular >= 0.0);
+            }
+        }
+    }
 }

@@ -98,8 +98,9 @@ TEST_CASE("enumeration: every variant valid, unique, and round-trips", "[variant
     const std::size_t precision = 2;  // fp64, fp32
     const std::size_t phong_exact_polygon = sided * verts * nodes * precision;
     const std::size_t phong_point_polygon = sided * verts;
+    const std::size_t phong_peak_polygon = 2 * sided * verts;  // lorentz, ellipsoid
     INFO("enumerated " << all.size());
-    CHECK(all.size() == phong_exact_polygon + phong_point_polygon);
+    CHECK(all.size() == phong_exact_polygon + phong_peak_polygon + phong_point_polygon);
 
     std::set<std::string> names;
     for (const auto& v : all) {
@@ -171,8 +172,9 @@ TEST_CASE("bad variant names are rejected naming the key", "[variant]") {
     CHECK_THAT(error_of("dist=lambert,method=exact,light=polygon"),
                Contains("key 'dist': unknown value 'lambert' (expected phong, blinn, beckmann, "
                         "ggx)"));
-    CHECK_THAT(error_of("dist=phong,method=ltcx,light=polygon"),
-               Contains("key 'method': unknown value 'ltcx' (expected exact, point)"));
+    CHECK_THAT(
+        error_of("dist=phong,method=ltcx,light=polygon"),
+        Contains("key 'method': unknown value 'ltcx' (expected exact, lorentz, ellipsoid, point)"));
     CHECK_THAT(error_of("dist=phong,method=exact,light=quad"),
                Contains("key 'light': unknown value 'quad' (expected polygon, disk, sphere, "
                         "ellipsoid)"));

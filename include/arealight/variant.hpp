@@ -13,7 +13,9 @@
 
 namespace arealight {
 
-enum class Method { Exact, Point };
+// exact: in-shader accuracy reference; lorentz, ellipsoid: seed 000's O(1) peak
+// functions; point: the point-light baseline of every speed ratio.
+enum class Method { Exact, Lorentz, Ellipsoid, Point };
 // Any honours each case's two_sided flag at run time; One and Two compile it in.
 enum class Sided { Any, One, Two };
 // Arithmetic precision of the shader math. method=exact, the in-shader accuracy

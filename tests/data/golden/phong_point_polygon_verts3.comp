@@ -375,10 +375,11 @@ vec4 al_shade(AlCase c) {
 }
 #endif
 
-#ifdef AL_METHOD_EXACT
-// Exact diffuse, specular and moment (CONTRACT.md 2) for Phong: clip by the horizon
-// of n (diffuse), then by r's hemisphere ((r.w)_+ vanishes beyond), and sum the
-// boundary integrals of method_exact_phong.glsl.
+#ifndef AL_METHOD_POINT
+// Diffuse, specular and moment (CONTRACT.md 2) for Phong by boundary integrals:
+// clip by the horizon of n (diffuse, exact), then by r's hemisphere ((r.w)_+
+// vanishes beyond), and sum the per-arc terms of the method's al_phong_edge
+// (method_exact_phong.glsl: quadrature; method_peak_phong.glsl: peak functions).
 vec4 al_shade(AlCase c) {
     rvec3 n = rvec3(c.n);
     real side = al_polygon_side(c);
@@ -431,7 +432,7 @@ vec4 al_shade(AlCase c) {
     return vec4(diffuse, specular, moment, 0.0f);
 }
 #endif
-#line 435 "arealight-generated"
+#line 436 "arealight-generated"
 #line 1 "templates/entry.glsl"
 // Compute entry point (GLSL only): one invocation per case, the VulkanRunner
 // contract (runtime/vulkan_runner.hpp): binding 0 cases, binding 1 results,
@@ -451,4 +452,4 @@ void main() {
     if (i >= al_push.count) return;
     al_results[i] = al_clean(al_shade(al_cases[i]));
 }
-#line 455 "arealight-generated"
+#line 456 "arealight-generated"
