@@ -18,6 +18,7 @@ struct AlEdgeFrame {
     real rm, s, c;   // r.m, |r.m|, sqrt(1 - s^2)
     real ag, af;     // a.g, a.f: tau_a = atan(ag, af)
     real bg, bf;     // the same for b
+    real xa, xb;     // x = r.u at a and b
     bool far_edge;
 };
 
@@ -39,7 +40,9 @@ AlEdgeFrame al_edge_frame(rvec3 a, rvec3 b, rvec3 m, rvec3 r, real N, real log_f
     E.af = dot(a, f);
     E.bg = dot(b, g);
     E.bf = dot(b, f);
-    real x_max = E.ag <= AL_R(0.0) && E.bg >= AL_R(0.0) ? E.c : max(dot(r, a), dot(r, b));
+    E.xa = dot(r, a);
+    E.xb = dot(r, b);
+    real x_max = E.ag <= AL_R(0.0) && E.bg >= AL_R(0.0) ? E.c : max(E.xa, E.xb);
     E.far_edge = N * E.s * E.s > AL_R(4.0) ||
                  (N + AL_R(1.0)) * al_log(max(x_max, AL_R(1e-30))) < log_far;
     return E;
