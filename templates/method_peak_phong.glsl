@@ -89,7 +89,8 @@ real al_peak_integral(real ag, real af, real bg, real bf, real dtau, real gmax, 
 // Upper bound of the integral over an arc that lies on one side of the foot, for a g
 // with log-concave decay away from it: g(tau_1) (1 - exp(-lambda dtau)) / lambda,
 // tau_1 the end nearer the foot and lambda = -d log g / dtau there (the tangent of
-// log g lies above it). A single fit's tail decays like a power of tau while x^k
+// log g lies above it). x^k is log-concave; the 1 / (1 - x^2) factor of the far form
+// is not beyond |tau| ~ s, so there the bound is an estimate. A single fit's tail decays like a power of tau while x^k
 // decays like a Gaussian: far out in the tail the fit was 1e20 times too large.
 real al_tail_bound(real g1, real lambda, real dtau) {
     if (!(lambda * dtau > AL_R(1e-6))) return g1 * dtau;
