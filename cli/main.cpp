@@ -7,7 +7,12 @@
 
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -19,6 +24,7 @@
 #include "arealight/generator.hpp"
 #include "arealight/machine_code.hpp"
 #include "arealight/reference.hpp"
+#include "arealight/report.hpp"
 #include "arealight/score.hpp"
 #include "summary.hpp"
 
@@ -160,6 +166,112 @@ int run_bench(const std::string& cases_path, const std::vector<std::string>& nam
     return kOk;
 }
 
+// Reads and concatenates case files; ids must be unique across them.
+std::optional<arealight::CaseSet> read_case_files(const std::vector<std::string>& paths) {
+    arealight::CaseSet all;
+    std::map<std::string, std::string> seen;  // id -> file
+    for (const auto& path : paths) {
+        auto set = arealight::read_cases(path, print_diagnostic);
+        if (!set) return std::nullopt;
+        for (auto& c : set->cases) {
+            auto [it, fresh] = seen.emplace(c.id, path);
+            if (!fresh) {
+                print_diagnostic(
+                    {arealight::Severity::Error, path, 0,
+                     fmt::format("{}: case '{}': id already used in {}", path, c.id, it->second)});
+                return std::nullopt;
+            }
+            all.cases.push_back(std::move(c));
+        }
+    }
+    return all;
+}
+
+struct ReportArgs {
+    std::vector<std::string> cases, refs;
+    std::string pattern, out_dir;
+    std::vector<double> exponents;
+    int repeats = 7;
+    double dispatch_ms = 20;
+    unsigned threads = 1;
+};
+
+// The options report and sweep share.
+void add_measure_options(CLI::App* cmd, ReportArgs& a) {
+    cmd->add_option("--cases", a.cases, "arealight-cases/1 file (repeatable)")->required();
+    cmd->add_option("--variants", a.pattern, "variant pattern, e.g. dist=phong,light=polygon")
+        ->required();
+    cmd->add_option("--out", a.out_dir, "folder to write into (created)")->required();
+    cmd->add_option("--repeat", a.repeats, "timed dispatches per variant (median)")
+        ->check(CLI::Range(1, 1000))
+        ->capture_default_str();
+    cmd->add_option("--dispatch-ms", a.dispatch_ms, "target length of a timed dispatch")
+        ->check(CLI::Range(1.0, 10000.0))
+        ->capture_default_str();
+    cmd->add_option("--threads", a.threads, "oracle threads")
+        ->check(CLI::Range(1u, 256u))
+        ->capture_default_str();
+}
+
+// report and sweep: measure, then write every file (nothing is written on failure).
+int run_report(const ReportArgs& a, bool sweep) {
+    auto cases = read_case_files(a.cases);
+    if (!cases) return kBadInput;
+    arealight::ReportOptions opt;
+    opt.pattern = a.pattern;
+    opt.repeats = a.repeats;
+    opt.dispatch_seconds = a.dispatch_ms * 1e-3;
+    opt.threads = a.threads;
+    if (sweep) {
+        opt.exponents = a.exponents;
+        if (opt.exponents.empty())
+            for (int k = 0; k <= 10; ++k) opt.exponents.push_back(std::pow(10.0, 0.5 * k));
+    }
+    if (!a.refs.empty()) {
+        arealight::ResultSet ref;
+        for (const auto& path : a.refs) {
+            auto r = arealight::read_results(path, print_diagnostic);
+            if (!r) return kBadInput;
+            ref.results.insert(ref.results.end(), r->results.begin(), r->results.end());
+        }
+        opt.reference = ref;
+    }
+    // Before any Vulkan call: Mesa reads its cache location once per process.
+    opt.shader_cache_dir = arealight::use_private_shader_cache();
+    arealight::EvalOptions eo;
+    auto ev = arealight::Evaluator::create(eo, print_diagnostic);
+    if (!ev) return kRuntime;
+    std::map<std::string, std::unique_ptr<ProgressPrinter>> printers;
+    auto progress = [&](const std::string& phase, std::size_t done, std::size_t total) {
+        auto& p = printers[phase];
+        if (!p)
+            p = std::make_unique<ProgressPrinter>(phase, phase == "compile" ? "variants"
+                                                         : phase == "time"  ? "variants"
+                                                                            : "cases");
+        (*p)(done, total);
+    };
+    auto report = arealight::run_report(*ev, *cases, opt, print_diagnostic, progress);
+    if (!report) return kRuntime;
+    report->case_files = a.cases;
+    report->device = ev->device_name();
+    const std::string stem = sweep ? "sweep" : "report";
+    std::vector<std::pair<std::string, std::string>> files = {
+        {stem + ".json", arealight::report_json(*report)},
+        {stem + ".md", arealight::report_markdown(*report)}};
+    for (auto& pic : arealight::report_pictures(*report)) files.push_back(std::move(pic));
+    std::error_code ec;
+    std::filesystem::create_directories(a.out_dir, ec);
+    for (const auto& [name, text] : files) {
+        if (!arealight::write_file_atomic(a.out_dir + "/" + name, text, print_diagnostic))
+            return kRuntime;
+    }
+    fmt::print(stderr, "{}: {} rows in {:.0f} s; wrote", stem, report->rows.size(),
+               report->seconds);
+    for (const auto& f : files) fmt::print(stderr, " {}/{}", a.out_dir, f.first);
+    fmt::print(stderr, "\n");
+    return kOk;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -236,6 +348,27 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, 1000))
         ->capture_default_str();
 
+    ReportArgs rep, swp;
+    rep.threads = swp.threads = threads;
+    auto* report = app.add_subcommand(
+        "report",
+        "Error against cost of every variant matching a pattern: instruction counts, time "
+        "ratio to the point light, error against the oracle; writes report.json, report.md, "
+        "report.svg, report_x86.svg");
+    add_measure_options(report, rep);
+    report->add_option("--ref", rep.refs,
+                       "oracle results of the cases (repeatable); default: computed here");
+    auto* sweep = app.add_subcommand(
+        "sweep",
+        "Cost and error against the exponent N (every case's N overridden in turn) for the "
+        "variants matching a pattern; writes sweep.json, sweep.md, sweep_time.svg, "
+        "sweep_error.svg");
+    add_measure_options(sweep, swp);
+    sweep
+        ->add_option("--exponent", swp.exponents,
+                     "exponents to sweep (repeatable; default 10^0, 10^0.5, ..., 10^5)")
+        ->check(CLI::Range(1.0, 100000.0));
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -248,6 +381,8 @@ int main(int argc, char** argv) {
     }
 
     if (variants->parsed()) return run_variants();
+    if (report->parsed()) return run_report(rep, false);
+    if (sweep->parsed()) return run_report(swp, true);
     if (eval->parsed()) return run_eval(cases_path, variant, backend, device, out_path);
     if (generate->parsed()) return run_generate(variant, glsl_path, spv_path, no_opt);
     if (bench->parsed())

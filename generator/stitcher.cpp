@@ -117,13 +117,16 @@ std::vector<std::string> variant_templates(const Variant& v, Language lang) {
     std::vector<std::string> files = {"templates/common.glsl"};
     files.push_back(std::string("templates/dist_") + to_string(v.dist) + ".glsl");
     // Boundary-integral methods share the per-arc geometry, then integrate each edge
-    // their own way.
+    // their own way; all but arvo (its own recurrence and accumulator) share the
+    // accumulator. The polygon's clipping streams arcs into it, so it comes after.
     if (v.method != Method::Point) {
-        files.push_back(std::string("templates/") + to_string(v.dist) + "_edge.glsl");
-        const bool peak = v.method == Method::Lorentz || v.method == Method::Ellipsoid;
-        files.push_back(std::string("templates/method_") + (peak ? "peak" : to_string(v.method)) +
-                        "_" + to_string(v.dist) + ".glsl");
+        const std::string dist = to_string(v.dist);
+        files.push_back("templates/" + dist + "_edge.glsl");
+        const std::string method = is_peak_method(v.method) ? "peak" : to_string(v.method);
+        files.push_back("templates/method_" + method + "_" + dist + ".glsl");
+        if (v.method != Method::Arvo) files.push_back("templates/" + dist + "_boundary.glsl");
     }
+    if (v.light == LightType::Polygon) files.push_back("templates/polygon.glsl");
     files.push_back(std::string("templates/light_") + to_string(v.light) + ".glsl");
     if (lang == Language::Glsl) files.push_back("templates/entry.glsl");
     return files;

@@ -13,14 +13,20 @@ namespace {
 
 const Distribution kDists[] = {Distribution::Phong, Distribution::Blinn, Distribution::Beckmann,
                                Distribution::Ggx};
-const Method kMethods[] = {Method::Exact, Method::Lorentz, Method::Ellipsoid, Method::Point};
+const Method kMethods[] = {Method::Exact,   Method::Arvo,      Method::Lorentz,
+                           Method::Pearson, Method::Ellipsoid, Method::Point};
 const LightType kLights[] = {LightType::Polygon, LightType::Disk, LightType::Sphere,
                              LightType::Ellipsoid};
 const Sided kSided[] = {Sided::Any, Sided::One, Sided::Two};
 const int kNodes[] = {8, 12, 16, 24};
 const Precision kPrecisions[] = {Precision::Fp64, Precision::Fp32};
-const int kMinVerts = 3;
-const int kMaxVerts = 8;  // the templates size their per-vertex arrays by AL_MAX_VERTS
+const Fit kFits[] = {Fit::Tuned, Fit::Paper};
+const SpecularForm kSpecularForms[] = {SpecularForm::TwoAxis, SpecularForm::Sg};
+// Largest polygon compiled in (the templates size their per-vertex arrays by
+// AL_MAX_VERTS): triangles, quads, and the contract's maximum. Cost falls with it
+// (fewer edges to clip and integrate); the sizes between bought little and each
+// doubled the variants to build and check.
+const int kVerts[] = {3, 4, 8};
 
 // The (dist, method, light) families with an implementation. Adding a method is
 // a template plus a row here.
@@ -31,7 +37,9 @@ struct Family {
 };
 const Family kFamilies[] = {
     {Distribution::Phong, Method::Exact, LightType::Polygon},
+    {Distribution::Phong, Method::Arvo, LightType::Polygon},
     {Distribution::Phong, Method::Lorentz, LightType::Polygon},
+    {Distribution::Phong, Method::Pearson, LightType::Polygon},
     {Distribution::Phong, Method::Ellipsoid, LightType::Polygon},
     {Distribution::Phong, Method::Point, LightType::Polygon},
 };
@@ -50,8 +58,11 @@ bool uses_nodes(const Variant& v) {
 bool uses_precision(const Variant& v) {
     return v.method == Method::Exact;
 }
-bool verts_in_range(int n) {
-    return n >= kMinVerts && n <= kMaxVerts;
+bool uses_peak_keys(const Variant& v) {
+    return is_peak_method(v.method);
+}
+bool known_verts(int n) {
+    return std::find(std::begin(kVerts), std::end(kVerts), n) != std::end(kVerts);
 }
 bool known_nodes(int n) {
     return std::find(std::begin(kNodes), std::end(kNodes), n) != std::end(kNodes);
@@ -113,14 +124,27 @@ const char* to_string(Method m) {
     switch (m) {
         case Method::Exact:
             return "exact";
+        case Method::Arvo:
+            return "arvo";
         case Method::Lorentz:
             return "lorentz";
+        case Method::Pearson:
+            return "pearson";
         case Method::Ellipsoid:
             return "ellipsoid";
         case Method::Point:
             return "point";
     }
     return "exact";
+}
+const char* to_string(Fit f) {
+    return f == Fit::Tuned ? "tuned" : "paper";
+}
+const char* to_string(SpecularForm s) {
+    return s == SpecularForm::TwoAxis ? "twoaxis" : "sg";
+}
+bool is_peak_method(Method m) {
+    return m == Method::Lorentz || m == Method::Pearson || m == Method::Ellipsoid;
 }
 const char* to_string(Precision p) {
     return p == Precision::Fp64 ? "fp64" : "fp32";
@@ -174,14 +198,9 @@ std::optional<Variant> parse_variant(const std::string& name, const DiagnosticCo
             v.sided = *s;
         } else if (key == "verts") {
             auto n = parse_int(value);
-            if (!n) {
-                return fail(fmt::format("key 'verts': value '{}' is not an integer in {}..{}",
-                                        value, kMinVerts, kMaxVerts));
-            }
-            if (!verts_in_range(*n)) {
-                return fail(fmt::format("key 'verts': value '{}' out of range {}..{}", value,
-                                        kMinVerts, kMaxVerts));
-            }
+            if (!n || !known_verts(*n))
+                return fail(fmt::format("key 'verts': value '{}' is not one of {}", value,
+                                        fmt::join(kVerts, ", ")));
             v.verts = *n;
         } else if (key == "nodes") {
             auto n = parse_int(value);
@@ -193,10 +212,19 @@ std::optional<Variant> parse_variant(const std::string& name, const DiagnosticCo
             auto p = lookup(kPrecisions, value);
             if (!p) return bad(choices(kPrecisions));
             v.precision = *p;
+        } else if (key == "fit") {
+            auto f = lookup(kFits, value);
+            if (!f) return bad(choices(kFits));
+            v.fit = *f;
+        } else if (key == "specular") {
+            auto f = lookup(kSpecularForms, value);
+            if (!f) return bad(choices(kSpecularForms));
+            v.specular = *f;
         } else {
-            return fail(fmt::format(
-                "unknown key '{}' (keys: dist, method, light, sided, verts, nodes, precision)",
-                key));
+            return fail(
+                fmt::format("unknown key '{}' (keys: dist, method, light, sided, verts, "
+                            "nodes, precision, fit, specular)",
+                            key));
         }
     }
     for (const char* required : {"dist", "method", "light"}) {
@@ -208,6 +236,11 @@ std::optional<Variant> parse_variant(const std::string& name, const DiagnosticCo
         return fail("key 'nodes' applies to method=exact only");
     if (seen.count("precision") && !uses_precision(v))
         return fail("key 'precision' applies to method=exact only");
+    for (const char* k : {"fit", "specular"}) {
+        if (seen.count(k) && !uses_peak_keys(v))
+            return fail(
+                fmt::format("key '{}' applies to method=lorentz, pearson, ellipsoid only", k));
+    }
     if (!has_family(v)) {
         return fail(fmt::format("no variant for dist={},method={},light={} yet", to_string(v.dist),
                                 to_string(v.method), to_string(v.light)));
@@ -219,10 +252,11 @@ bool is_valid(const Variant& v) {
     const Variant d;
     const bool sided_ok =
         std::find(std::begin(kSided), std::end(kSided), v.sided) != std::end(kSided);
-    const bool verts_ok = uses_verts(v) ? verts_in_range(v.verts) : v.verts == d.verts;
+    const bool verts_ok = uses_verts(v) ? known_verts(v.verts) : v.verts == d.verts;
     const bool nodes_ok = uses_nodes(v) ? known_nodes(v.nodes) : v.nodes == d.nodes;
     const bool precision_ok = uses_precision(v) || v.precision == d.precision;
-    return has_family(v) && sided_ok && verts_ok && nodes_ok && precision_ok;
+    const bool peak_ok = uses_peak_keys(v) || (v.fit == d.fit && v.specular == d.specular);
+    return has_family(v) && sided_ok && verts_ok && nodes_ok && precision_ok && peak_ok;
 }
 
 std::string canonical_name(const Variant& v) {
@@ -234,6 +268,9 @@ std::string canonical_name(const Variant& v) {
     if (uses_nodes(v) && v.nodes != d.nodes) s += fmt::format(",nodes={}", v.nodes);
     if (uses_precision(v) && v.precision != d.precision)
         s += fmt::format(",precision={}", to_string(v.precision));
+    if (uses_peak_keys(v) && v.fit != d.fit) s += fmt::format(",fit={}", to_string(v.fit));
+    if (uses_peak_keys(v) && v.specular != d.specular)
+        s += fmt::format(",specular={}", to_string(v.specular));
     return s;
 }
 
@@ -245,18 +282,28 @@ std::vector<Variant> enumerate_variants() {
         base.method = f.method;
         base.light = f.light;
         for (Sided s : kSided) {
-            for (int verts = kMinVerts; verts <= kMaxVerts; ++verts) {
-                if (!uses_verts(base) && verts != kMinVerts) continue;
+            for (int verts : kVerts) {
+                if (!uses_verts(base) && verts != kVerts[0]) continue;
                 for (int nodes : kNodes) {
                     if (!uses_nodes(base) && nodes != kNodes[0]) continue;
                     for (Precision p : kPrecisions) {
                         if (!uses_precision(base) && p != kPrecisions[0]) continue;
-                        Variant v = base;
-                        v.sided = s;
-                        if (uses_verts(v)) v.verts = verts;
-                        if (uses_nodes(v)) v.nodes = nodes;
-                        if (uses_precision(v)) v.precision = p;
-                        out.push_back(v);
+                        for (Fit fit : kFits) {
+                            if (!uses_peak_keys(base) && fit != kFits[0]) continue;
+                            for (SpecularForm sf : kSpecularForms) {
+                                if (!uses_peak_keys(base) && sf != kSpecularForms[0]) continue;
+                                Variant v = base;
+                                v.sided = s;
+                                if (uses_verts(v)) v.verts = verts;
+                                if (uses_nodes(v)) v.nodes = nodes;
+                                if (uses_precision(v)) v.precision = p;
+                                if (uses_peak_keys(v)) {
+                                    v.fit = fit;
+                                    v.specular = sf;
+                                }
+                                out.push_back(v);
+                            }
+                        }
                     }
                 }
             }
@@ -278,6 +325,10 @@ std::vector<std::pair<std::string, std::string>> variant_defines(const Variant& 
     if (uses_verts(v)) d.emplace_back("AL_MAX_VERTS", std::to_string(v.verts));
     if (uses_nodes(v)) d.emplace_back("AL_NODES", std::to_string(v.nodes));
     d.emplace_back("AL_PRECISION_FP64", effective_precision(v) == Precision::Fp64 ? "1" : "0");
+    if (uses_peak_keys(v)) {
+        if (v.fit == Fit::Paper) d.emplace_back("AL_FIT_PAPER", "1");
+        if (v.specular == SpecularForm::Sg) d.emplace_back("AL_SPECULAR_SG", "1");
+    }
     return d;
 }
 
@@ -301,6 +352,10 @@ bool variant_matches(const Variant& v, const std::string& pattern) {
             actual = std::to_string(v.nodes);
         else if (key == "precision")
             actual = to_string(effective_precision(v));
+        else if (key == "fit" && uses_peak_keys(v))
+            actual = to_string(v.fit);
+        else if (key == "specular" && uses_peak_keys(v))
+            actual = to_string(v.specular);
         else
             return false;  // unknown, or a key this variant has no value for
         if (actual != value) return false;

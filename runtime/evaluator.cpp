@@ -126,6 +126,10 @@ struct Evaluator::Impl {
 Evaluator::Evaluator(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 Evaluator::~Evaluator() = default;
 
+std::string Evaluator::device_name() const {
+    return impl_->runner ? impl_->runner->device_name() : "cpu mirror";
+}
+
 std::unique_ptr<Evaluator> Evaluator::create(const EvalOptions& opt,
                                              const DiagnosticConsumer& diag) {
     auto impl = std::make_unique<Impl>();

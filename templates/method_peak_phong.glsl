@@ -30,60 +30,182 @@
 // - The ellipse's parameter (eq. 18) is solved in closed form from that sample:
 //   a = y (1 - C) / (C (1 - y)), C = cos^2 tau_w, y the sample's relative height.
 //
-// Peak functions: AL_METHOD_LORENTZ: P = 1 / (1 + a tau^2) (eq. 11), its integral
-// in the single-atan form of eq. 12, written as atan2 so the mod pi is exact.
-// AL_METHOD_ELLIPSOID: P = a / (1 + (a - 1) cos^2 tau) (eq. 15), integral
-// sqrt(a) atan(tan(tau) / sqrt(a)) (eq. 16); it contains the azimuth core
-// 1 / (1 - x^2) exactly (a = s^2).
-// Measured error: see README (arealight eval + shared/tools/score).
+// Peak functions (Q normalized to 1 at the peak and 0 at tau = pi/2):
+// - lorentz: P = 1 / (1 + a tau^2) (eq. 11), integral in the single-atan form of
+//   eq. 12, written as atan2 so the mod pi is exact.
+// - pearson: a blend alpha Q_L + (1 - alpha) Q_P of that Lorentzian and the Pearson
+//   VII P = 1 / (1 + b tau^2)^2 (eq. 13), integral tau / (2 (1 + b tau^2)) +
+//   atan(sqrt(b) tau) / (2 sqrt(b)), alpha from one more exact sample in the tail
+//   and clamped to [0, 1] (as printed it is unbounded: it reached -496).
+// - ellipsoid: P = a / (1 + (a - 1) cos^2 tau) (eq. 15), integral
+//   sqrt(a) atan(tan(tau) / sqrt(a)) (eq. 16); it contains the azimuth core
+//   1 / (1 - x^2) exactly (a = s^2). fit=paper blends it with the squared ellipse,
+//   whose integral is (sqrt(b) (b+1) / 2) atan(tan(tau) / sqrt(b))
+//   - (b (b-1) / 4) sin(2 tau) / (sin^2 tau + b cos^2 tau) (eq. 17 prints that
+//   denominator as "2c"; differentiating checks it).
+// fit=tuned (default): the fit points above; pearson solves b through the fit
+// point by two fixed-point steps of P_P(tau_w) = P_min(b) + y (1 - P_min(b)) from
+// b = (y^(-1/2) - 1) / tau_w^2 (b = a/2 as printed missed the sample), tail sample
+// at tan(tau_t) = 2 tan(tau_w); the ellipsoid blends the ellipse with the squared
+// ellipse through the fit point (P_E(tau_w) = p gives b = p t / (1 + t - p),
+// t = tan^2 tau_w; two fixed-point steps for P_E^2 = b^2 + y (1 - b^2)) at the same
+// tail point. Measured on the public typical set, moment relL2 (floor 1e-2): single
+// ellipse 5.7e-3, blend 3.0e-3.
+// fit=paper: seed 000 as printed but for its errors: near form on every edge, no
+// tail bound, half width from eq. 7 with the parity labels swapped (our f = 1
+// integrand (1 - x^k) / (1 - x^2) is the printed "even" case with n = k - 2, which
+// matches the true half width to ~0.01 rad), b = a/2 (pearson),
+// b = a (2.1 + 1.28 x_w / x_w(0)) (ellipsoid), tail point eq. 14, alpha clamped.
+// Measured error: see README (arealight report).
 
 #define AL_PEAK_LOG_FAR AL_R(-2.3)
-// Integral over the arc of Q = a cos^2 / (sin^2 + a cos^2) = (P_E - a) / (1 - a):
-// (sqrt(a) Psi - a dtau) / (1 - a), Psi = atan(tan(tau)/sqrt(a)) across the arc. That
-// cancels as a -> 1 (Q -> cos^2): within 0.05 of 1, interpolate linearly between
-// the exact a = 1 value dtau/2 + (sin 2tau_b - sin 2tau_a)/4 and a = 1 -+ 0.05
-// (interpolation error ~1e-4 of the integral, rounding amplified at most 20x).
-real al_ellipse_q_at(real ag, real af, real bg, real bf, real dtau, real a) {
+// Integral over the arc of the ellipse's Q = a cos^2 / (sin^2 + a cos^2) =
+// (P_E - a) / (1 - a): (sqrt(a) Psi - a dtau) / (1 - a), Psi = atan(tan(tau)/sqrt(a))
+// across the arc; or (squared) of the squared ellipse's Q = (P_E^2 - a^2) / (1 - a^2)
+// (fit=paper ellipsoid and the tuned blend). Both cancel as a -> 1 and both tend to
+// cos^2 there: within 0.05 of 1, interpolate linearly between the exact a = 1 value
+// dtau/2 + (sin 2tau_b - sin 2tau_a)/4 and a = 1 -+ 0.05 (interpolation error ~1e-4
+// of the integral, rounding amplified at most 20x).
+real al_ellipse_q_at(real ag, real af, real bg, real bf, real dtau, real a, bool squared) {
     real sa = sqrt(a);
     real psi = al_atan2(bg, sa * bf) - al_atan2(ag, sa * af);
-    return (sa * psi - a * dtau) / (AL_R(1.0) - a);
+    if (!squared) return (sa * psi - a * dtau) / (AL_R(1.0) - a);
+    real rat = AL_R(2.0) * (bg * bf / (bg * bg + a * bf * bf) - ag * af / (ag * ag + a * af * af));
+    real integral_p = AL_R(0.5) * sa * (a + AL_R(1.0)) * psi - AL_R(0.25) * a * (a - AL_R(1.0)) * rat;
+    return (integral_p - a * a * dtau) / (AL_R(1.0) - a * a);
 }
-real al_ellipse_q_integral(real ag, real af, real bg, real bf, real dtau, real a) {
-    if (abs(AL_R(1.0) - a) >= AL_R(0.05)) return al_ellipse_q_at(ag, af, bg, bf, dtau, a);
+real al_ellipse_q_integral(real ag, real af, real bg, real bf, real dtau, real a, bool squared) {
+    if (abs(AL_R(1.0) - a) >= AL_R(0.05)) return al_ellipse_q_at(ag, af, bg, bf, dtau, a, squared);
     real q1 = AL_R(0.5) * dtau +
               AL_R(0.5) * (bg * bf / (bg * bg + bf * bf) - ag * af / (ag * ag + af * af));
     real a0 = a < AL_R(1.0) ? AL_R(0.95) : AL_R(1.05);
-    real q0 = al_ellipse_q_at(ag, af, bg, bf, dtau, a0);
+    real q0 = al_ellipse_q_at(ag, af, bg, bf, dtau, a0, squared);
     return q1 + (a - AL_R(1.0)) / (a0 - AL_R(1.0)) * (q0 - q1);
 }
 
-// Integral over [tau_a, tau_b] (tau = atan(g, f) of each end, dtau = tau_b - tau_a
-// >= 0) of the fit of g through g_max, g_min and g(tau_w) = gw, with
-// tw2 = tan^2 tau_w. Finite for any input; a flat g integrates as g_min dtau.
-real al_peak_integral(real ag, real af, real bg, real bf, real dtau, real gmax, real gmin,
-                      real tw2, real gw) {
-    real span = gmax - gmin;
-    if (!(abs(span) > AL_R(1e-7) * max(abs(gmax), abs(gmin)))) return gmin * dtau;
-    real y = clamp((gw - gmin) / span, AL_R(1e-6), AL_R(0.999999));
-#ifdef AL_METHOD_LORENTZ
-    // Q(tau_w) = y solved for a (seed 000, after eq. 11), with tau_w the angle. A g
-    // flatter than the Lorentzian family allows gives a <= 0; the floor bounds the
-    // cancellation in (integral P - P_min dtau) / (1 - P_min) to a factor ~8.
-    real tw = al_atan2(sqrt(tw2), AL_R(1.0));
+// A fit of g over an arc: its closed-form max and min, and exact samples at the
+// fit point tau_w and (blends only) the tail point tau_t, as tan^2 and value.
+struct AlPeakFit {
+    real gmax, gmin;
+    real tw2, gw;
+    real tt2, gt;
+};
+
+// Half width at half maximum from seed 000 eq. 7, "even" branch (see the header),
+// for the near-form exponent k; x_w(0) = pi/4.
+real al_paper_half_width(real c, real k) {
+    real base = max(c - c / max(k - AL_R(3.0), AL_R(1.0)), AL_R(0.0));
+    return AL_R(0.78539816339744830962) *
+           al_exp(AL_R(0.45) * al_log1p(-al_exp(AL_R(2.5) * al_log(max(base, AL_R(1e-30))))));
+}
+// Seed 000 eq. 14: the tail point from the half width, below pi/2.
+real al_paper_tail(real xw) {
+    const real xw0 = AL_R(0.78539816339744830962);
+    real u = AL_R(1.0) - xw / xw0;
+    real u2 = u * u, u4 = u2 * u2;
+    real xt = xw + AL_R(0.3946) * xw0 * (AL_R(1.0) - u4 * u4 * u4);
+    return min(xt, AL_R(1.5607963267948966));
+}
+
+// Lorentzian and Pearson VII, Q at angle t and the arc integral of Q (ta to
+// ta + dtau), for shape a (Lorentz, power 1) or b (Pearson, power 2).
+real al_lorentz_q(real a, real t) {
     const real quarter_pi2 = AL_R(2.46740110027233965471);  // (pi/2)^2
-    real a = max((AL_R(1.0) - tw * tw / quarter_pi2 - y) / (y * tw * tw), AL_R(0.05));
-    real ta = al_atan2(ag, af), tb = ta + dtau;
-    real sa = sqrt(a);
+    real p_min = AL_R(1.0) / (AL_R(1.0) + a * quarter_pi2);
+    return (AL_R(1.0) / (AL_R(1.0) + a * t * t) - p_min) / (AL_R(1.0) - p_min);
+}
+real al_lorentz_q_integral(real a, real ta, real dtau) {
+    const real quarter_pi2 = AL_R(2.46740110027233965471);
+    real sa = sqrt(a), tb = ta + dtau;
     real integral_p = al_atan2(sa * dtau, AL_R(1.0) + a * ta * tb) / sa;
     real p_min = AL_R(1.0) / (AL_R(1.0) + a * quarter_pi2);
-    real integral_q = (integral_p - p_min * dtau) / (AL_R(1.0) - p_min);
+    return (integral_p - p_min * dtau) / (AL_R(1.0) - p_min);
+}
+real al_pearson_q(real b, real t) {
+    const real quarter_pi2 = AL_R(2.46740110027233965471);
+    real m = AL_R(1.0) / (AL_R(1.0) + b * quarter_pi2);
+    real p = AL_R(1.0) / (AL_R(1.0) + b * t * t);
+    return (p * p - m * m) / (AL_R(1.0) - m * m);
+}
+real al_pearson_q_integral(real b, real ta, real dtau) {
+    const real quarter_pi2 = AL_R(2.46740110027233965471);
+    real sb = sqrt(b), tb = ta + dtau;
+    real integral_p = AL_R(0.5) * (tb / (AL_R(1.0) + b * tb * tb) - ta / (AL_R(1.0) + b * ta * ta)) +
+                      AL_R(0.5) * al_atan2(sb * dtau, AL_R(1.0) + b * ta * tb) / sb;
+    real m = AL_R(1.0) / (AL_R(1.0) + b * quarter_pi2);
+    return (integral_p - m * m * dtau) / (AL_R(1.0) - m * m);
+}
+
+// The blend weight of eq. 13 from the tail sample: Q_mix(tau_t) = y_t, clamped.
+real al_blend_alpha(real q_wide, real q_narrow, real yt) {
+    real den = q_narrow - q_wide;
+    if (!(abs(den) > AL_R(1e-12))) return AL_R(1.0);
+    return clamp((q_narrow - yt) / den, AL_R(0.0), AL_R(1.0));
+}
+
+// Integral over [tau_a, tau_b] (tau = atan(g, f) of each end, dtau = tau_b - tau_a
+// >= 0) of the fit of g through F. Finite for any input; a flat g integrates as
+// g_min dtau.
+real al_peak_integral(real ag, real af, real bg, real bf, real dtau, AlPeakFit F) {
+    real span = F.gmax - F.gmin;
+    if (!(abs(span) > AL_R(1e-7) * max(abs(F.gmax), abs(F.gmin)))) return F.gmin * dtau;
+    real y = clamp((F.gw - F.gmin) / span, AL_R(1e-6), AL_R(0.999999));
+#if defined(AL_METHOD_LORENTZ) || defined(AL_METHOD_PEARSON)
+    // Q_L(tau_w) = y solved for a (seed 000, after eq. 11), tau_w the angle. A g
+    // flatter than the Lorentzian family allows gives a <= 0; the floor bounds the
+    // cancellation in (integral P - P_min dtau) / (1 - P_min) to a factor ~8.
+    real tw = al_atan2(sqrt(F.tw2), AL_R(1.0));
+    const real quarter_pi2 = AL_R(2.46740110027233965471);  // (pi/2)^2
+    real a = max((AL_R(1.0) - tw * tw / quarter_pi2 - y) / (y * tw * tw), AL_R(0.05));
+    real ta = al_atan2(ag, af);
+    real integral_q = al_lorentz_q_integral(a, ta, dtau);
+#ifdef AL_METHOD_PEARSON
+#ifdef AL_FIT_PAPER
+    real b = AL_R(0.5) * a;
+#else
+    // P_P(tau_w) = P_min(b) + y (1 - P_min(b)) by fixed-point steps from P_min = 0.
+    real b = max((AL_R(1.0) / sqrt(y) - AL_R(1.0)) / (tw * tw), AL_R(0.05));
+    for (int it = 0; it < 2; ++it) {
+        real m = AL_R(1.0) / (AL_R(1.0) + b * quarter_pi2);
+        real target = m * m + y * (AL_R(1.0) - m * m);
+        b = max((AL_R(1.0) / sqrt(target) - AL_R(1.0)) / (tw * tw), AL_R(0.05));
+    }
+#endif
+    real tt = al_atan2(sqrt(F.tt2), AL_R(1.0));
+    real yt = (F.gt - F.gmin) / span;
+    real alpha = al_blend_alpha(al_lorentz_q(a, tt), al_pearson_q(b, tt), yt);
+    integral_q = alpha * integral_q + (AL_R(1.0) - alpha) * al_pearson_q_integral(b, ta, dtau);
+#endif
 #else
     // Q = a cos^2 / (sin^2 + a cos^2) for any a > 0 (a > 1: g rises away from 0);
-    // Q(tau_w) = y gives a in closed form.
-    real a = clamp(y * tw2 / (AL_R(1.0) - y), AL_R(1e-12), AL_R(1e6));
-    real integral_q = al_ellipse_q_integral(ag, af, bg, bf, dtau, a);
+    // Q(tau_w) = y gives a in closed form (eq. 18).
+    real a = clamp(y * F.tw2 / (AL_R(1.0) - y), AL_R(1e-12), AL_R(1e6));
+    real integral_q = al_ellipse_q_integral(ag, af, bg, bf, dtau, a, false);
+#ifdef AL_FIT_PAPER
+    // Squared ellipse with b = a (2.1 + 1.28 x_w / x_w(0)), blended at the tail point.
+    real xw = al_atan2(sqrt(F.tw2), AL_R(1.0));
+    real b = clamp(a * (AL_R(2.1) + AL_R(1.62974661726101) * xw), AL_R(1e-12), AL_R(1e6));
+#else
+    // Squared ellipse through the fit point: P_E(tau_w) = p solves
+    // b = p t / (1 + t - p), t = tan^2 tau_w, and P_E^2 = b^2 + y (1 - b^2) fixes p;
+    // two fixed-point steps from b^2 = 0.
+    real p = sqrt(y);
+    real b = clamp(p * F.tw2 / (AL_R(1.0) + F.tw2 - p), AL_R(1e-12), AL_R(1e6));
+    for (int it = 0; it < 2; ++it) {
+        p = sqrt(b * b + y * (AL_R(1.0) - b * b));
+        b = clamp(p * F.tw2 / max(AL_R(1.0) + F.tw2 - p, AL_R(1e-12)), AL_R(1e-12), AL_R(1e6));
+    }
 #endif
-    return gmin * dtau + span * integral_q;
+    real yt = (F.gt - F.gmin) / span;
+    real qe = a / (F.tt2 + a);
+    real pe2 = b * (AL_R(1.0) + F.tt2) / (F.tt2 + b);
+    real qe2 = abs(AL_R(1.0) - b) > AL_R(1e-6) ? (pe2 * pe2 - b * b) / (AL_R(1.0) - b * b)
+                                               : AL_R(1.0) / (AL_R(1.0) + F.tt2);
+    real alpha = al_blend_alpha(qe, qe2, yt);
+    integral_q = alpha * integral_q +
+                 (AL_R(1.0) - alpha) * al_ellipse_q_integral(ag, af, bg, bf, dtau, b, true);
+#endif
+    return F.gmin * dtau + span * integral_q;
 }
 
 // Upper bound of the integral over an arc that lies on one side of the foot, for a g
@@ -108,20 +230,37 @@ bool al_arc_near_end(AlEdgeFrame E, AL_INOUT(real) tan1, AL_INOUT(real) x1) {
     return true;
 }
 
+// The integrand at tan^2(tau) = t2, from s^2 and log c: the near form
+// (1 - x^k) / (1 - x^2), or the far form x^k / (1 - x^2). 1 - x^2 =
+// (s^2 + t2) / (1 + t2) without cancellation, log x = log c - log1p(t2) / 2.
+real al_peak_sample(real s2, real lc, real k, real t2, bool far_edge) {
+    real one_minus_x2 = (s2 + t2) / (AL_R(1.0) + t2);
+    real lx = lc - AL_R(0.5) * al_log1p(t2);
+    return (far_edge ? al_exp(k * lx) : -al_expm1(k * lx)) / one_minus_x2;
+}
+
 // Fitted integral of the near-form integrand (1 - x^k) / (1 - x^2) (far = false)
 // or of x^k / (1 - x^2) (far = true) over the arc of E.
 real al_peak_edge_term(AlEdgeFrame E, real dtau, real k, bool far_edge) {
     real s2 = E.s * E.s;
     real lc = AL_R(0.5) * al_log1p(-s2);  // log c
-    real tw2 = far_edge ? AL_R(1.38629436111989061883) / (k + AL_R(2.0) / max(s2, AL_R(1e-30)))
-                        : s2 + AL_R(2.0) / k;
-    // At tau_w: 1 - x^2 = (s^2 + tan^2) / (1 + tan^2) without cancellation, log x.
-    real one_minus_xw2 = (s2 + tw2) / (AL_R(1.0) + tw2);
-    real lxw = lc - AL_R(0.5) * al_log1p(tw2);
+    AlPeakFit F;
+#ifdef AL_FIT_PAPER
+    real xw = al_paper_half_width(E.c, k);
+    real txw = tan(xw), txt = tan(al_paper_tail(xw));
+    F.tw2 = txw * txw;
+    F.tt2 = txt * txt;
+#else
+    F.tw2 = far_edge ? AL_R(1.38629436111989061883) / (k + AL_R(2.0) / max(s2, AL_R(1e-30)))
+                     : s2 + AL_R(2.0) / k;
+    F.tt2 = AL_R(4.0) * F.tw2;
+#endif
+    F.gw = al_peak_sample(s2, lc, k, F.tw2, far_edge);
+    F.gt = al_peak_sample(s2, lc, k, F.tt2, far_edge);
     if (far_edge) {
-        real gmax = s2 > AL_R(0.0) ? al_exp(k * lc) / s2 : AL_R(0.0);
-        real fit = al_peak_integral(E.ag, E.af, E.bg, E.bf, dtau, gmax, AL_R(0.0), tw2,
-                                    al_exp(k * lxw) / one_minus_xw2);
+        F.gmax = s2 > AL_R(0.0) ? al_exp(k * lc) / s2 : AL_R(0.0);
+        F.gmin = AL_R(0.0);
+        real fit = al_peak_integral(E.ag, E.af, E.bg, E.bf, dtau, F);
         real tan1, x1;
         if (!al_arc_near_end(E, tan1, x1)) return fit;
         // g = x^k / (1 - x^2), 1 - x^2 = s^2 + c^2 sin^2; -d log g = k tan + 2 x^2 tan / (1 - x^2).
@@ -131,28 +270,41 @@ real al_peak_edge_term(AlEdgeFrame E, real dtau, real k, bool far_edge) {
         real lambda = k * tan1 + AL_R(2.0) * x1 * x1 * tan1 / omx2;
         return min(fit, al_tail_bound(g1, max(lambda, AL_R(0.0)), dtau));
     }
-    real gmax = s2 > AL_R(1e-30) ? -al_expm1(k * lc) / s2 : AL_R(0.5) * k;
-    return al_peak_integral(E.ag, E.af, E.bg, E.bf, dtau, gmax, AL_R(1.0), tw2,
-                            -al_expm1(k * lxw) / one_minus_xw2);
+    F.gmax = s2 > AL_R(1e-30) ? -al_expm1(k * lc) / s2 : AL_R(0.5) * k;
+    F.gmin = AL_R(1.0);
+    return al_peak_integral(E.ag, E.af, E.bg, E.bf, dtau, F);
 }
 
 // Per-arc sums for the arc a -> b with inward unit normal m (phong_edge.glsl), the
 // same quantities as the exact method's.
 AlPhongEdge al_phong_edge(rvec3 a, rvec3 b, rvec3 m, rvec3 r, rvec3 n, real N) {
     AlEdgeFrame E = al_edge_frame(a, b, m, r, N, AL_PEAK_LOG_FAR);
+#ifdef AL_FIT_PAPER
+    E.far_edge = false;  // the paper fits the near form everywhere
+#endif
     real dtau = max(al_atan2(E.bg, E.bf) - al_atan2(E.ag, E.af), AL_R(0.0));
     bool far_edge = E.far_edge;
     real t1 = al_peak_edge_term(E, dtau, N + AL_R(1.0), far_edge);
     real t0 = al_peak_edge_term(E, dtau, N, far_edge);
-    // x^N: max c^N, min 0, exact half width cos^2 tau_w = 2^(-2/N), where g = c^N / 2.
+    // x^N: max c^N, min 0, exact half width cos^2 tau_w = 2^(-2/N), where g = c^N / 2;
+    // the tail sample at tan(tau_t) = 2 tan(tau_w).
+    real lc = AL_R(0.5) * al_log1p(-E.s * E.s);
     real cw2 = al_exp(AL_R(-1.38629436111989061883) / N);
-    real cn = al_exp(N * AL_R(0.5) * al_log1p(-E.s * E.s));
-    real tz = al_peak_integral(E.ag, E.af, E.bg, E.bf, dtau, cn, AL_R(0.0),
-                               (AL_R(1.0) - cw2) / cw2, AL_R(0.5) * cn);
+    real cn = al_exp(N * lc);
+    AlPeakFit F;
+    F.gmax = cn;
+    F.gmin = AL_R(0.0);
+    F.tw2 = (AL_R(1.0) - cw2) / cw2;
+    F.gw = AL_R(0.5) * cn;
+    F.tt2 = AL_R(4.0) * F.tw2;
+    F.gt = al_exp(N * (lc - AL_R(0.5) * al_log1p(F.tt2)));
+    real tz = al_peak_integral(E.ag, E.af, E.bg, E.bf, dtau, F);
+#ifndef AL_FIT_PAPER
     real tan1, x1;
     if (al_arc_near_end(E, tan1, x1)) {
         tz = min(tz, al_tail_bound(al_exp(N * al_log(max(x1, AL_R(1e-30)))), N * tan1, dtau));
     }
+#endif
     AlPhongEdge e;
     e.near_edge = !far_edge;
     real sgn = far_edge ? AL_R(1.0) : AL_R(-1.0);

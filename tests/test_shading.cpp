@@ -250,10 +250,26 @@ double rel_l2(const ResultSet& out, const std::map<std::string, CaseResult>& ref
     return std::sqrt(num / den);
 }
 
-// Measured on these 120 cases (both backends): moment relL2 ellipsoid 7.0e-3,
-// lorentz 7.4e-3; specular 7.7e-3 / 8.1e-3. The bar leaves 2x; issue 5's goal
-// (1e-3) is far below it.
-constexpr double kPeakRelL2Tol = 1.5e-2;
+// Every peak-function variant with its bars on these 120 cases: relL2 of moment and
+// specular against the oracle, each about 1.5x the worst of the two backends
+// measured (in brackets). The paper's fits and the lobe product are kept as
+// baselines, so theirs are looser.
+struct PeakBar {
+    const char* variant;
+    double moment, specular;
+};
+const PeakBar kPeakBars[] = {
+    {"dist=phong,method=lorentz,light=polygon", 1.1e-2, 1.2e-2},              // [7.4e-3, 8.1e-3]
+    {"dist=phong,method=pearson,light=polygon", 5.5e-3, 6e-3},                // [3.5e-3, 4.0e-3]
+    {"dist=phong,method=ellipsoid,light=polygon", 5.5e-3, 6.5e-3},            // [3.7e-3, 4.2e-3]
+    {"dist=phong,method=lorentz,light=polygon,fit=paper", 7e-3, 8e-3},        // [4.7e-3, 5.3e-3]
+    {"dist=phong,method=pearson,light=polygon,fit=paper", 9.5e-3, 9e-3},      // [6.4e-3, 6.1e-3]
+    {"dist=phong,method=ellipsoid,light=polygon,fit=paper", 6.5e-3, 7.5e-3},  // [4.2e-3, 5.0e-3]
+    {"dist=phong,method=lorentz,light=polygon,specular=sg", 1.1e-2, 4e-2},    // [.., 2.7e-2]
+    {"dist=phong,method=pearson,light=polygon,specular=sg", 5.5e-3, 4e-2},    // [.., 2.6e-2]
+    {"dist=phong,method=ellipsoid,light=polygon,specular=sg", 5.5e-3, 4e-2},  // [.., 2.6e-2]
+    {"dist=phong,method=ellipsoid,light=polygon,fit=paper,specular=sg", 6.5e-3, 4e-2},
+};
 // The fits' clamps and the near/far choice are branch points, so fp32 rounding
 // differences between the backends can grow past one ulp; measured worst 1.8e-5 on
 // these cases, 9.3e-5 (specular of N = 1.4) over 600 other random cases.
@@ -266,8 +282,8 @@ TEST_CASE("peak-function methods: bounded error on random polygons, backends agr
     const CaseSet cases = random_phong_polygons(4242, 120);
     std::map<std::string, CaseResult> ref;
     for (const auto& c : cases.cases) ref[c.id] = reference_case(c, {});
-    for (const char* name :
-         {"dist=phong,method=ellipsoid,light=polygon", "dist=phong,method=lorentz,light=polygon"}) {
+    for (const PeakBar& bar : kPeakBars) {
+        const char* name = bar.variant;
         std::map<Backend, ResultSet> out;
         for (Backend b : {Backend::Cpu, Backend::Vulkan}) {
             out[b] = run(b, name, cases);
@@ -276,8 +292,8 @@ TEST_CASE("peak-function methods: bounded error on random polygons, backends agr
             const double specular = rel_l2(out[b], ref, &CaseResult::specular);
             INFO(name << " on " << to_string(b) << ": relL2 moment " << moment << ", specular "
                       << specular);
-            CHECK(moment <= kPeakRelL2Tol);
-            CHECK(specular <= kPeakRelL2Tol);
+            CHECK(moment <= bar.moment);
+            CHECK(specular <= bar.specular);
             for (const auto& r : out[b].results) {
                 INFO(r.id);
                 CHECK(*r.moment >= 0.0);
@@ -295,7 +311,8 @@ TEST_CASE("peak-function methods: bounded error on random polygons, backends agr
     }
 }
 
-TEST_CASE("peak-function methods: finite and non-negative at the extremes", "[shading][vulkan]") {
+TEST_CASE("peak-function and arvo methods: finite and non-negative at the extremes",
+          "[shading][vulkan]") {
     // Exponents 1, 1.5, 2, 1e5; lights straight along r (c -> 1 on every edge),
     // grazing r's horizon (c -> 0), tiny and nearly hemisphere-filling.
     glm::dvec3 n(0, 0, 1), v = glm::normalize(glm::dvec3(0.4, 0.0, 0.9));
@@ -317,8 +334,11 @@ TEST_CASE("peak-function methods: finite and non-negative at the extremes", "[sh
             }
         }
     }
-    for (const char* name :
-         {"dist=phong,method=ellipsoid,light=polygon", "dist=phong,method=lorentz,light=polygon"}) {
+    std::vector<std::string> names = {"dist=phong,method=arvo,light=polygon"};
+    for (const PeakBar& bar : kPeakBars) names.push_back(bar.variant);
+    names.push_back("dist=phong,method=lorentz,light=polygon,fit=paper,specular=sg");
+    names.push_back("dist=phong,method=pearson,light=polygon,fit=paper,specular=sg");
+    for (const std::string& name : names) {
         for (Backend b : {Backend::Cpu, Backend::Vulkan}) {
             for (const auto& res : run(b, name, set).results) {
                 INFO(name << " " << to_string(b) << " " << res.id << ": moment " << *res.moment
@@ -329,5 +349,28 @@ TEST_CASE("peak-function methods: finite and non-negative at the extremes", "[sh
                 CHECK(*res.specular >= 0.0);
             }
         }
+    }
+}
+
+TEST_CASE("arvo: exact for integer exponents up to fp32 rounding, both backends",
+          "[shading][vulkan]") {
+    // Arvo's recurrence is exact for integer N; what is left is fp32 rounding summed
+    // over N terms and the edges. Exponents rounded (and capped at 3000 to bound the
+    // O(N) loop) on the random polygons.
+    CaseSet cases = random_phong_polygons(777, 60);
+    for (auto& c : cases.cases)
+        c.material.exponent = std::min(std::round(c.material.exponent), 3000.0);
+    std::map<std::string, CaseResult> ref;
+    for (const auto& c : cases.cases) ref[c.id] = reference_case(c, {});
+    // Measured on these cases: relL2 moment / specular 4.3e-6 / 4.5e-6 (worse backend).
+    constexpr double kArvoRelL2Tol = 2e-5;
+    for (Backend b : {Backend::Cpu, Backend::Vulkan}) {
+        const ResultSet out = run(b, "dist=phong,method=arvo,light=polygon", cases);
+        REQUIRE(out.results.size() == cases.cases.size());
+        const double moment = rel_l2(out, ref, &CaseResult::moment);
+        const double specular = rel_l2(out, ref, &CaseResult::specular);
+        INFO(to_string(b) << ": relL2 moment " << moment << ", specular " << specular);
+        CHECK(moment <= kArvoRelL2Tol);
+        CHECK(specular <= kArvoRelL2Tol);
     }
 }

@@ -61,8 +61,8 @@ TEST_CASE("canonical names list the fixed keys, then non-default keys", "[varian
     CHECK(canonical_name(point) == "dist=phong,method=point,light=polygon,verts=4");
 
     // Keys in any order, defaults spelled out: the canonical form drops them.
-    auto p = parse_ok("light=polygon,nodes=8,sided=any,dist=phong,method=exact,verts=5");
-    CHECK(canonical_name(p) == "dist=phong,method=exact,light=polygon,verts=5,nodes=8");
+    auto p = parse_ok("light=polygon,nodes=8,sided=any,dist=phong,method=exact,verts=4");
+    CHECK(canonical_name(p) == "dist=phong,method=exact,light=polygon,verts=4,nodes=8");
     CHECK(canonical_name(parse_ok("method=point,light=polygon,dist=phong,sided=one")) ==
           "dist=phong,method=point,light=polygon,sided=one");
 }
@@ -92,15 +92,20 @@ TEST_CASE("parsing fills the named fields and defaults the rest", "[variant]") {
 
 TEST_CASE("enumeration: every variant valid, unique, and round-trips", "[variant]") {
     const auto all = enumerate_variants();
-    const std::size_t sided = 3;  // any, one, two
-    const std::size_t verts = 8 - 3 + 1;
+    const std::size_t sided = 3;      // any, one, two
+    const std::size_t verts = 3;      // 3, 4, 8
     const std::size_t nodes = 4;      // 8, 12, 16, 24
     const std::size_t precision = 2;  // fp64, fp32
+    const std::size_t fits = 2;       // tuned, paper
+    const std::size_t specular = 2;   // twoaxis, sg
     const std::size_t phong_exact_polygon = sided * verts * nodes * precision;
+    const std::size_t phong_arvo_polygon = sided * verts;
     const std::size_t phong_point_polygon = sided * verts;
-    const std::size_t phong_peak_polygon = 2 * sided * verts;  // lorentz, ellipsoid
+    // lorentz, pearson, ellipsoid
+    const std::size_t phong_peak_polygon = 3 * sided * verts * fits * specular;
     INFO("enumerated " << all.size());
-    CHECK(all.size() == phong_exact_polygon + phong_peak_polygon + phong_point_polygon);
+    CHECK(all.size() ==
+          phong_exact_polygon + phong_arvo_polygon + phong_peak_polygon + phong_point_polygon);
 
     std::set<std::string> names;
     for (const auto& v : all) {
@@ -145,6 +150,34 @@ TEST_CASE("validity: implemented family, keys in range, unused keys at default",
     CHECK(is_valid(v));
     v.method = Method::Point;  // fp32 only: its precision key keeps the default
     CHECK_FALSE(is_valid(v));
+    v = Variant{};
+    v.verts = 5;  // compiled sizes are 3, 4 and 8 only
+    CHECK_FALSE(is_valid(v));
+    v = Variant{};
+    v.fit = Fit::Paper;  // a peak-method key
+    CHECK_FALSE(is_valid(v));
+    v.method = Method::Pearson;
+    CHECK(is_valid(v));
+    v.specular = SpecularForm::Sg;
+    CHECK(is_valid(v));
+    v.method = Method::Arvo;
+    CHECK_FALSE(is_valid(v));
+}
+
+TEST_CASE("peak keys: fit and specular name and parse", "[variant]") {
+    const Variant v =
+        parse_ok("dist=phong,method=pearson,light=polygon,specular=sg,fit=paper,verts=4");
+    CHECK(v.method == Method::Pearson);
+    CHECK(v.fit == Fit::Paper);
+    CHECK(v.specular == SpecularForm::Sg);
+    CHECK(canonical_name(v) ==
+          "dist=phong,method=pearson,light=polygon,verts=4,fit=paper,specular=sg");
+    CHECK(canonical_name(parse_ok("dist=phong,method=ellipsoid,light=polygon,fit=tuned")) ==
+          "dist=phong,method=ellipsoid,light=polygon");
+    CHECK(variant_matches(v, "method=pearson,fit=paper"));
+    CHECK_FALSE(variant_matches(v, "fit=tuned"));
+    CHECK_FALSE(variant_matches(parse_ok("dist=phong,method=arvo,light=polygon"), "fit=tuned"));
+    CHECK(effective_precision(parse_ok("dist=phong,method=arvo,light=polygon")) == Precision::Fp32);
 }
 
 TEST_CASE("precision: fp64 by default for method=exact, fp32 for the rest", "[variant]") {
@@ -174,19 +207,26 @@ TEST_CASE("bad variant names are rejected naming the key", "[variant]") {
                         "ggx)"));
     CHECK_THAT(
         error_of("dist=phong,method=ltcx,light=polygon"),
-        Contains("key 'method': unknown value 'ltcx' (expected exact, lorentz, ellipsoid, point)"));
+        Contains("key 'method': unknown value 'ltcx' (expected exact, arvo, lorentz, pearson, "
+                 "ellipsoid, point)"));
     CHECK_THAT(error_of("dist=phong,method=exact,light=quad"),
                Contains("key 'light': unknown value 'quad' (expected polygon, disk, sphere, "
                         "ellipsoid)"));
     CHECK_THAT(error_of("dist=phong,method=exact,light=polygon,sided=both"),
                Contains("key 'sided': unknown value 'both' (expected any, one, two)"));
     CHECK(error_of("dist=phong,method=exact,light=polygon,verts=9") ==
-          "variant 'dist=phong,method=exact,light=polygon,verts=9': key 'verts': value '9' out "
-          "of range 3..8");
-    CHECK_THAT(error_of("dist=phong,method=exact,light=polygon,verts=2"),
-               Contains("key 'verts': value '2' out of range 3..8"));
+          "variant 'dist=phong,method=exact,light=polygon,verts=9': key 'verts': value '9' is "
+          "not one of 3, 4, 8");
+    CHECK_THAT(error_of("dist=phong,method=exact,light=polygon,verts=5"),
+               Contains("key 'verts': value '5' is not one of 3, 4, 8"));
     CHECK_THAT(error_of("dist=phong,method=exact,light=polygon,verts=-4"),
-               Contains("key 'verts': value '-4' is not an integer in 3..8"));
+               Contains("key 'verts': value '-4' is not one of 3, 4, 8"));
+    CHECK_THAT(error_of("dist=phong,method=exact,light=polygon,fit=paper"),
+               Contains("key 'fit' applies to method=lorentz, pearson, ellipsoid only"));
+    CHECK_THAT(error_of("dist=phong,method=arvo,light=polygon,specular=sg"),
+               Contains("key 'specular' applies to method=lorentz, pearson, ellipsoid only"));
+    CHECK_THAT(error_of("dist=phong,method=pearson,light=polygon,fit=best"),
+               Contains("key 'fit': unknown value 'best' (expected tuned, paper)"));
     CHECK_THAT(error_of("dist=phong,method=exact,light=polygon,nodes=10"),
                Contains("key 'nodes': value '10' is not one of 8, 12, 16, 24"));
     CHECK_THAT(error_of("method=exact,light=polygon"), Contains("key 'dist' is required"));
@@ -278,6 +318,6 @@ TEST_CASE("pattern matching compares effective values", "[variant]") {
     }
     INFO("all " << all << ", exact sided=two " << exact << ", point verts=3 " << point);
     CHECK(all == enumerate_variants().size());
-    CHECK(exact == 6 * 4 * 2);
+    CHECK(exact == 3 * 4 * 2);  // verts 3, 4, 8; nodes; precision
     CHECK(point == 3);
 }

@@ -48,6 +48,9 @@ class Evaluator {
                                              const DiagnosticConsumer& diag);
     ~Evaluator();
 
+    // The Vulkan device's name, or "cpu mirror".
+    std::string device_name() const;
+
     // Results for the applicable cases, in file order; nullopt on failure.
     std::optional<ResultSet> run(const Variant& v, const CaseSet& cases,
                                  const DiagnosticConsumer& diag, EvalStats* stats = nullptr);

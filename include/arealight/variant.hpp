@@ -13,9 +13,18 @@
 
 namespace arealight {
 
-// exact: in-shader accuracy reference; lorentz, ellipsoid: seed 000's O(1) peak
-// functions; point: the point-light baseline of every speed ratio.
-enum class Method { Exact, Lorentz, Ellipsoid, Point };
+// exact: in-shader accuracy reference (quadrature); arvo: Arvo's O(N) recurrence
+// for integer exponents (the paper's reference cost); lorentz, pearson, ellipsoid:
+// seed 000's O(1) peak functions; point: the point-light baseline of every speed ratio.
+enum class Method { Exact, Arvo, Lorentz, Pearson, Ellipsoid, Point };
+// Peak-function fitting recipe: tuned (default: fit points, shape parameters and
+// near/far forms of our own, templates/method_peak_phong.glsl) or paper (seed 000
+// eq. 7, 13-14, 17-18 as printed, parity labels corrected).
+enum class Fit { Tuned, Paper };
+// How a peak method forms the double-axis (specular) moment: twoaxis (Arvo's exact
+// two-axis relation over the same edge integrals) or sg (seed 000 section 7.1: the
+// product of the two cosine lobes as one lobe through spherical Gaussians).
+enum class SpecularForm { TwoAxis, Sg };
 // Any honours each case's two_sided flag at run time; One and Two compile it in.
 enum class Sided { Any, One, Two };
 // Arithmetic precision of the shader math. method=exact, the in-shader accuracy
@@ -28,13 +37,16 @@ struct Variant {
     Method method = Method::Exact;
     LightType light = LightType::Polygon;
     Sided sided = Sided::Any;
-    int verts = 8;   // polygon: largest polygon compiled in, 3..8
+    int verts = 8;   // polygon: largest polygon compiled in: 3, 4 or 8
     int nodes = 16;  // method=exact: Gauss-Legendre nodes per edge, 8/12/16/24
-    Precision precision = Precision::Fp64;  // method=exact: fp64 or fp32
+    Precision precision = Precision::Fp64;          // method=exact: fp64 or fp32
+    Fit fit = Fit::Tuned;                           // peak methods
+    SpecularForm specular = SpecularForm::TwoAxis;  // peak methods
 
     bool operator==(const Variant& o) const {
         return dist == o.dist && method == o.method && light == o.light && sided == o.sided &&
-               verts == o.verts && nodes == o.nodes && precision == o.precision;
+               verts == o.verts && nodes == o.nodes && precision == o.precision && fit == o.fit &&
+               specular == o.specular;
     }
     bool operator!=(const Variant& o) const { return !(*this == o); }
 };
@@ -42,6 +54,11 @@ struct Variant {
 const char* to_string(Method m);
 const char* to_string(Sided s);
 const char* to_string(Precision p);
+const char* to_string(Fit f);
+const char* to_string(SpecularForm s);
+
+// Whether the method is one of seed 000's peak functions (keys fit, specular).
+bool is_peak_method(Method m);
 
 // The precision a variant's shader computes in: its key where it has one, else fp32.
 Precision effective_precision(const Variant& v);
