@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -217,6 +218,15 @@ void add_measure_options(CLI::App* cmd, ReportArgs& a) {
 int run_report(const ReportArgs& a, bool sweep) {
     auto cases = read_case_files(a.cases);
     if (!cases) return kBadInput;
+    const auto all = arealight::enumerate_variants();
+    if (std::none_of(all.begin(), all.end(), [&](const arealight::Variant& v) {
+            return arealight::variant_matches(v, a.pattern);
+        })) {
+        print_diagnostic(
+            {arealight::Severity::Error, "", 0,
+             fmt::format("no variant matches '{}' (arealight variants lists them)", a.pattern)});
+        return kBadInput;
+    }
     arealight::ReportOptions opt;
     opt.pattern = a.pattern;
     opt.repeats = a.repeats;

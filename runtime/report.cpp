@@ -46,14 +46,16 @@ const QuantityScore* find_score(const ReportRow& r, const std::string& q) {
     return nullptr;
 }
 
-// Rows on the error-cost front: no other row of the same exponent is at most as
-// costly and at most as wrong, and better in one.
+// Rows on the error-cost front: no other row of the same exponent and shape (so
+// the same cases) is at most as costly and at most as wrong, and better in one.
 void mark_pareto(std::vector<ReportRow>& rows) {
     for (auto& a : rows) {
         a.pareto = std::isfinite(a.error()) && std::isfinite(a.ratio);
         if (!a.pareto) continue;
         for (const auto& b : rows) {
-            if (&a == &b || b.exponent != a.exponent) continue;
+            if (&a == &b || b.exponent != a.exponent || b.variant.sided != a.variant.sided ||
+                b.variant.verts != a.variant.verts)
+                continue;
             if (!std::isfinite(b.error()) || !std::isfinite(b.ratio)) continue;
             if (b.ratio <= a.ratio && b.error() <= a.error() &&
                 (b.ratio < a.ratio || b.error() < a.error())) {
@@ -369,35 +371,46 @@ std::vector<std::pair<std::string, std::string>> report_pictures(const Report& r
         return plot_color(std::find(labels.begin(), labels.end(), l) - labels.begin());
     };
     if (!sweep) {
+        // One shape, so that every point is measured on the same cases: the default
+        // one when the run has it.
+        const Variant d;
+        std::vector<const ReportRow*> rows;
+        for (const auto& row : r.rows)
+            if (row.variant.sided == d.sided && row.variant.verts == d.verts) rows.push_back(&row);
+        std::string shape = " (sided=any, verts=8)";
+        if (rows.empty()) {
+            for (const auto& row : r.rows) rows.push_back(&row);
+            shape.clear();
+        }
         Plot p;
-        p.title = "Error against cost: " + r.pattern;
+        p.title = "Error against cost: " + r.pattern + shape;
         p.x_label = "time per case / point light (lavapipe, median)";
         p.y_label = "relative L2 error (max of specular, moment)";
         for (const auto& l : labels) {
             PlotSeries s;
             s.name = l;
             s.color = color(l);
-            for (const auto& row : r.rows)
-                if (method_label(row.variant) == l)
-                    s.points.push_back({row.ratio, row.error(), row.name});
-            p.series.push_back(s);
+            for (const ReportRow* row : rows)
+                if (method_label(row->variant) == l)
+                    s.points.push_back({row->ratio, row->error(), row->name});
+            if (!s.points.empty()) p.series.push_back(s);
         }
-        for (const auto& row : r.rows)
-            if (row.pareto) p.front.push_back({row.ratio, row.error(), row.name});
+        for (const ReportRow* row : rows)
+            if (row->pareto) p.front.push_back({row->ratio, row->error(), row->name});
         std::sort(p.front.begin(), p.front.end(),
                   [](const PlotPoint& a, const PlotPoint& b) { return a.x < b.x; });
         p.front_name = "Pareto front";
         out.emplace_back("report.svg", svg_plot(p));
         // The same against the deterministic cost: lavapipe's x86-64 instruction count.
         Plot q = p;
-        q.title = "Error against code size: " + r.pattern;
+        q.title = "Error against code size: " + r.pattern + shape;
         q.x_label = "x86-64 instructions of the lavapipe shader";
         q.front.clear();
         for (auto& s : q.series) {
             s.points.clear();
-            for (const auto& row : r.rows)
-                if (method_label(row.variant) == s.name && row.x86_instructions > 0)
-                    s.points.push_back({double(row.x86_instructions), row.error(), row.name});
+            for (const ReportRow* row : rows)
+                if (method_label(row->variant) == s.name && row->x86_instructions > 0)
+                    s.points.push_back({double(row->x86_instructions), row->error(), row->name});
         }
         out.emplace_back("report_x86.svg", svg_plot(q));
         return out;

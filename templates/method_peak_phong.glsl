@@ -205,7 +205,9 @@ real al_peak_integral(real ag, real af, real bg, real bf, real dtau, AlPeakFit F
     integral_q = alpha * integral_q +
                  (AL_R(1.0) - alpha) * al_ellipse_q_integral(ag, af, bg, bf, dtau, b, true);
 #endif
-    return F.gmin * dtau + span * integral_q;
+    // Q lies in [0, 1], so its integral in [0, dtau]: rounding of the closed forms
+    // on short arcs must not push the fit below g_min or above g_max.
+    return F.gmin * dtau + span * clamp(integral_q, AL_R(0.0), dtau);
 }
 
 // Upper bound of the integral over an arc that lies on one side of the foot, for a g
