@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Sets up the machine, builds, and runs the main job on the example cases: the
 # oracle, then the exact Phong polygon variant generated, compiled, validated and
-# run on lavapipe and on the CPU mirror, each with its error table.
+# run on lavapipe and on the CPU mirror, each with its error table; then the
+# error-against-cost report of every Phong polygon method (default shape).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
@@ -16,3 +17,5 @@ for backend in vulkan cpu; do
     --out "out/examples.$backend.json"
   $al compare --ref out/examples.ref.json --out "out/examples.$backend.json"
 done
+$al report --cases examples/cases.json --variants dist=phong,light=polygon,verts=8,sided=any \
+  --out out/report
