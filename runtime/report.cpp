@@ -294,7 +294,8 @@ namespace {
 std::string score_cell(const ReportRow& row, const std::string& q) {
     const QuantityScore* s = find_score(row, q);
     if (!s) return "–";
-    std::string cell = fmt::format("{} / {} / {}", g3(s->p95), g3(s->max), g3(s->rel_l2));
+    std::string cell =
+        fmt::format("{} / {} / {} / {}", g3(s->median), g3(s->p95), g3(s->max), g3(s->rel_l2));
     if (s->missing || s->bad) cell += fmt::format(" ({} missing, {} bad)", s->missing, s->bad);
     return cell;
 }
@@ -339,7 +340,8 @@ std::string report_markdown(const Report& r) {
         "Cases: {}. Device: {}. {} rows in {:.0f} s.\n\n"
         "Time: median of repeated dispatches on the device, per case; × point is the ratio "
         "to the point-light variant of the same shape (sided, verts), timed interleaved with "
-        "it. Error: |x − ref| / max(ref, 1e-3) against `arealight reference` (p95, max) and "
+        "it. Error: |x − ref| / max(ref, 1e-3) against `arealight reference` (median, p95, "
+        "max) and "
         "relative L2, the metric of `shared/tools/score`. front: on the error–cost Pareto "
         "front (error = the larger relL2 of specular and moment).\n\n",
         sweep ? "sweep" : "report", sweep ? "sweep" : "report", r.pattern, files, r.device,
