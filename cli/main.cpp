@@ -14,6 +14,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <thread>
 
@@ -243,6 +244,19 @@ int run_report(const ReportArgs& a, bool sweep) {
             auto r = arealight::read_results(path, print_diagnostic);
             if (!r) return kBadInput;
             ref.results.insert(ref.results.end(), r->results.begin(), r->results.end());
+        }
+        // Every case a matching variant will run needs its oracle value.
+        std::set<std::string> have;
+        for (const auto& r : ref.results) have.insert(r.id);
+        for (const auto& c : cases->cases) {
+            const bool used = std::any_of(all.begin(), all.end(), [&](const arealight::Variant& v) {
+                return arealight::variant_matches(v, a.pattern) && arealight::case_applies(v, c);
+            });
+            if (used && !have.count(c.id)) {
+                print_diagnostic({arealight::Severity::Error, "", 0,
+                                  fmt::format("case '{}' has no value in the --ref files", c.id)});
+                return kBadInput;
+            }
         }
         opt.reference = ref;
     }

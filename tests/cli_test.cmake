@@ -121,3 +121,10 @@ foreach(f sweep.json sweep_time.svg sweep_error.svg)
     message(FATAL_ERROR "sweep did not write ${f}")
   endif()
 endforeach()
+
+# report --ref: oracle values that miss a case the variants run are bad input.
+file(WRITE "${WORK}/partial.ref.json" "{\"format\": \"arealight-results/1\", \"variant\": \"oracle\", \"backend\": \"cpu\", \"results\": []}")
+expect_exit(1 "${AREALIGHT}" report --cases "${SOURCE}/../examples/cases.json" --variants dist=phong,light=polygon,verts=4,sided=one,method=point --ref "${WORK}/partial.ref.json" --out "${WORK}/noref")
+if(NOT LAST_ERR MATCHES "has no value in the --ref files" OR EXISTS "${WORK}/noref")
+  message(FATAL_ERROR "report with a partial --ref: ${LAST_ERR}")
+endif()
