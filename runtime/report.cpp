@@ -303,12 +303,12 @@ std::string score_cell(const ReportRow& row, const std::string& q) {
 std::string table(const std::vector<const ReportRow*>& rows, bool sweep) {
     std::string t;
     if (sweep) {
-        t += "| variant | N | cases | ns/case | × point | specular p95 / max / relL2 | moment p95 "
-             "/ max / relL2 |\n";
+        t += "| variant | N | cases | ns/case | × point | specular median / p95 / max / relL2 "
+             "| moment median / p95 / max / relL2 |\n";
         t += "|---|---:|---:|---:|---:|---|---|\n";
     } else {
         t += "| variant | cases | SPIR-V | x86-64 | ns/case | × point | diffuse relL2 | specular "
-             "p95 / max / relL2 | moment p95 / max / relL2 | front |\n";
+             "median / p95 / max / relL2 | moment median / p95 / max / relL2 | front |\n";
         t += "|---|---:|---:|---:|---:|---:|---:|---|---|:---:|\n";
     }
     for (const ReportRow* r : rows) {
