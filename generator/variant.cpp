@@ -61,11 +61,9 @@ bool uses_precision(const Variant& v) {
 bool uses_peak_keys(const Variant& v) {
     return is_peak_method(v.method);
 }
-bool known_verts(int n) {
-    return std::find(std::begin(kVerts), std::end(kVerts), n) != std::end(kVerts);
-}
-bool known_nodes(int n) {
-    return std::find(std::begin(kNodes), std::end(kNodes), n) != std::end(kNodes);
+template <class T, std::size_t N>
+bool contains(const T (&values)[N], const T& x) {
+    return std::find(std::begin(values), std::end(values), x) != std::end(values);
 }
 
 template <class T, std::size_t N>
@@ -176,56 +174,49 @@ std::optional<Variant> parse_variant(const std::string& name, const DiagnosticCo
     std::map<std::string, std::string> seen;
     for (const auto& [key, value] : *pairs) {
         if (!seen.emplace(key, value).second) return fail(fmt::format("key '{}' given twice", key));
-        auto bad = [&](const std::string& allowed) {
-            return fail(
-                fmt::format("key '{}': unknown value '{}' (expected {})", key, value, allowed));
+        // Each sets its field from the value, or returns the message saying why not.
+        auto pick = [&](const auto& values, auto& field) -> std::optional<std::string> {
+            auto x = lookup(values, value);
+            if (!x)
+                return fmt::format("key '{}': unknown value '{}' (expected {})", key, value,
+                                   choices(values));
+            field = *x;
+            return std::nullopt;
         };
+        auto pick_int = [&](const auto& values, int& field) -> std::optional<std::string> {
+            auto n = parse_int(value);
+            if (!n || !contains(values, *n))
+                return fmt::format("key '{}': value '{}' is not one of {}", key, value,
+                                   fmt::join(values, ", "));
+            field = *n;
+            return std::nullopt;
+        };
+        std::optional<std::string> error;
         if (key == "dist") {
-            auto d = lookup(kDists, value);
-            if (!d) return bad(choices(kDists));
-            v.dist = *d;
+            error = pick(kDists, v.dist);
         } else if (key == "method") {
-            auto m = lookup(kMethods, value);
-            if (!m) return bad(choices(kMethods));
-            v.method = *m;
+            error = pick(kMethods, v.method);
         } else if (key == "light") {
-            auto l = lookup(kLights, value);
-            if (!l) return bad(choices(kLights));
-            v.light = *l;
+            error = pick(kLights, v.light);
         } else if (key == "sided") {
-            auto s = lookup(kSided, value);
-            if (!s) return bad(choices(kSided));
-            v.sided = *s;
+            error = pick(kSided, v.sided);
         } else if (key == "verts") {
-            auto n = parse_int(value);
-            if (!n || !known_verts(*n))
-                return fail(fmt::format("key 'verts': value '{}' is not one of {}", value,
-                                        fmt::join(kVerts, ", ")));
-            v.verts = *n;
+            error = pick_int(kVerts, v.verts);
         } else if (key == "nodes") {
-            auto n = parse_int(value);
-            if (!n || !known_nodes(*n))
-                return fail(fmt::format("key 'nodes': value '{}' is not one of {}", value,
-                                        fmt::join(kNodes, ", ")));
-            v.nodes = *n;
+            error = pick_int(kNodes, v.nodes);
         } else if (key == "precision") {
-            auto p = lookup(kPrecisions, value);
-            if (!p) return bad(choices(kPrecisions));
-            v.precision = *p;
+            error = pick(kPrecisions, v.precision);
         } else if (key == "fit") {
-            auto f = lookup(kFits, value);
-            if (!f) return bad(choices(kFits));
-            v.fit = *f;
+            error = pick(kFits, v.fit);
         } else if (key == "specular") {
-            auto f = lookup(kSpecularForms, value);
-            if (!f) return bad(choices(kSpecularForms));
-            v.specular = *f;
+            error = pick(kSpecularForms, v.specular);
         } else {
             return fail(
                 fmt::format("unknown key '{}' (keys: dist, method, light, sided, verts, "
                             "nodes, precision, fit, specular)",
                             key));
         }
+        if (error) return fail(*error);
     }
     for (const char* required : {"dist", "method", "light"}) {
         if (!seen.count(required)) return fail(fmt::format("key '{}' is required", required));
@@ -250,10 +241,9 @@ std::optional<Variant> parse_variant(const std::string& name, const DiagnosticCo
 
 bool is_valid(const Variant& v) {
     const Variant d;
-    const bool sided_ok =
-        std::find(std::begin(kSided), std::end(kSided), v.sided) != std::end(kSided);
-    const bool verts_ok = uses_verts(v) ? known_verts(v.verts) : v.verts == d.verts;
-    const bool nodes_ok = uses_nodes(v) ? known_nodes(v.nodes) : v.nodes == d.nodes;
+    const bool sided_ok = contains(kSided, v.sided);
+    const bool verts_ok = uses_verts(v) ? contains(kVerts, v.verts) : v.verts == d.verts;
+    const bool nodes_ok = uses_nodes(v) ? contains(kNodes, v.nodes) : v.nodes == d.nodes;
     const bool precision_ok = uses_precision(v) || v.precision == d.precision;
     const bool peak_ok = uses_peak_keys(v) || (v.fit == d.fit && v.specular == d.specular);
     return has_family(v) && sided_ok && verts_ok && nodes_ok && precision_ok && peak_ok;

@@ -176,15 +176,13 @@ std::optional<Report> run_report(Evaluator& ev, const CaseSet& cases, const Repo
         // Each variant timed side by side with its baseline, interleaved, on the
         // same cases repeated until a dispatch lasts opt.dispatch_seconds.
         std::map<std::string, Packed> baseline_packs;
-        std::map<std::string, double> baseline_ns;
         for (std::size_t k = 0; k < variants.size(); ++k) {
             const Variant& v = variants[k];
             std::vector<const Case*> todo;
             for (const auto& c : set.cases)
                 if (case_applies(v, c)) todo.push_back(&c);
             if (todo.empty()) return fail("no case applies to " + canonical_name(v));
-            EvalStats stats;
-            auto out = ev.run(v, set, diag, &stats);
+            auto out = ev.run(v, set, diag);
             if (!out) return std::nullopt;
             ReportRow row;
             row.variant = v;
@@ -197,27 +195,26 @@ std::optional<Report> run_report(Evaluator& ev, const CaseSet& cases, const Repo
 
             const Variant base = baseline_of(v);
             row.baseline = canonical_name(base);
-            auto copies_for = [&](const Variant& u, Packed& probe) -> std::optional<std::size_t> {
-                probe = pack_repeated(todo, 1);
+            // Copies of the cases per dispatch for u, from a timed run of one copy.
+            const Packed single = pack_repeated(todo, 1);
+            auto copies_for = [&](const Variant& u) -> std::optional<std::size_t> {
                 std::vector<float> res;
                 double s = 0;
                 // The first dispatch also compiles (or loads) the pipeline: time the second.
                 for (int i = 0; i < 2; ++i)
-                    if (!ev.run_packed(u, probe.data, probe.count, res, diag, &s))
+                    if (!ev.run_packed(u, single.data, single.count, res, diag, &s))
                         return std::nullopt;
                 const double want = opt.dispatch_seconds / std::max(s, 1e-9);
                 return std::clamp<std::size_t>(
                     static_cast<std::size_t>(std::ceil(want)), 1,
                     std::max<std::size_t>(1, kMaxDispatchCases / todo.size()));
             };
-            Packed probe;
-            auto copies = copies_for(v, probe);
+            auto copies = copies_for(v);
             if (!copies) return std::nullopt;
             const Packed pack = pack_repeated(todo, *copies);
             const bool is_base = v == base;
             if (!is_base && !baseline_packs.count(row.baseline)) {
-                Packed bprobe;
-                auto bcopies = copies_for(base, bprobe);
+                auto bcopies = copies_for(base);
                 if (!bcopies) return std::nullopt;
                 baseline_packs[row.baseline] = pack_repeated(todo, *bcopies);
             }
