@@ -80,10 +80,19 @@ void emit_defines(std::string& out, const Variant& v) {
 
 // Gauss-Legendre tables for AL_NODES at the working precision, with enough digits
 // to round-trip a double.
+// Whether the variant's family uses a key (its row in the family table).
+bool family_uses(const Variant& v, const char* key) {
+    const VariantFamily* f = find_family(v);
+    if (!f) return false;
+    for (const auto& k : f->keys)
+        if (k.key == key) return true;
+    return false;
+}
+
+// Gauss-Legendre tables at the working precision, with enough digits to round-trip
+// a double: AL_GL_* for the AL_NODES of key nodes, AL_GR_* for the AL_RADIAL of key
+// radial.
 void emit_tables(std::string& out, const Variant& v, Language lang, const std::string& suffix) {
-    if (v.method != Method::Exact) return;
-    std::vector<double> x, w;
-    gauss_legendre(v.nodes, x, w);
     auto table = [&](const char* name, const std::vector<double>& values) {
         std::string items;
         for (double d : values)
@@ -95,8 +104,14 @@ void emit_tables(std::string& out, const Variant& v, Language lang, const std::s
             out += fmt::format("static const real {}[{}] = {{{}}};\n", name, values.size(), items);
         }
     };
-    table("AL_GL_X", x);
-    table("AL_GL_W", w);
+    auto rule = [&](int n, const char* x_name, const char* w_name) {
+        std::vector<double> x, w;
+        gauss_legendre(n, x, w);
+        table(x_name, x);
+        table(w_name, w);
+    };
+    if (family_uses(v, "nodes")) rule(v.nodes, "AL_GL_X", "AL_GL_W");
+    if (family_uses(v, "radial")) rule(v.radial, "AL_GR_X", "AL_GR_W");
 }
 
 void emit_template(std::string& out, const std::string& path, const TemplateLookup& lookup,
@@ -114,20 +129,12 @@ void emit_template(std::string& out, const std::string& path, const TemplateLook
 }  // namespace
 
 std::vector<std::string> variant_templates(const Variant& v, Language lang) {
+    // Shared math first; then the family's own list (generator/variant.cpp, the
+    // family table), none for a variant without a family; the entry point last.
     std::vector<std::string> files = {"templates/common.glsl"};
-    files.push_back(std::string("templates/dist_") + to_string(v.dist) + ".glsl");
-    // Boundary-integral methods share the per-arc geometry, then integrate each edge
-    // their own way; all but arvo (its own recurrence and accumulator) share the
-    // accumulator. The polygon's clipping streams arcs into it, so it comes after.
-    if (v.method != Method::Point) {
-        const std::string dist = to_string(v.dist);
-        files.push_back("templates/" + dist + "_edge.glsl");
-        const std::string method = is_peak_method(v.method) ? "peak" : to_string(v.method);
-        files.push_back("templates/method_" + method + "_" + dist + ".glsl");
-        if (v.method != Method::Arvo) files.push_back("templates/" + dist + "_boundary.glsl");
+    if (const VariantFamily* family = find_family(v)) {
+        for (const auto& name : family->templates) files.push_back("templates/" + name);
     }
-    if (v.light == LightType::Polygon) files.push_back("templates/polygon.glsl");
-    files.push_back(std::string("templates/light_") + to_string(v.light) + ".glsl");
     if (lang == Language::Glsl) files.push_back("templates/entry.glsl");
     return files;
 }

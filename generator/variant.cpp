@@ -1,12 +1,19 @@
+// The variant space as two tables, and the functions that loop over them: a key
+// table (one row per key: its values, default, field, #define and doc) and a family
+// table (one row per implemented (dist, method, light): the keys it uses, the values
+// of each, and its templates). Adding a key or a family is a row here (and, for a
+// key, its typed field in Variant); parsing, validity, canonical names, enumeration,
+// defines, pattern matching and every error message follow from the rows.
 #include "arealight/variant.hpp"
 
 #include <fmt/format.h>
-#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cctype>
+#include <functional>
 #include <iterator>
 #include <map>
+#include <type_traits>
 
 namespace arealight {
 namespace {
@@ -18,66 +25,399 @@ const Method kMethods[] = {Method::Exact,   Method::Arvo,      Method::Lorentz,
 const LightType kLights[] = {LightType::Polygon, LightType::Disk, LightType::Sphere,
                              LightType::Ellipsoid};
 const Sided kSided[] = {Sided::Any, Sided::One, Sided::Two};
-const int kNodes[] = {8, 12, 16, 24};
 const Precision kPrecisions[] = {Precision::Fp64, Precision::Fp32};
 const Fit kFits[] = {Fit::Tuned, Fit::Paper};
 const SpecularForm kSpecularForms[] = {SpecularForm::TwoAxis, SpecularForm::Sg};
-// Largest polygon compiled in (the templates size their per-vertex arrays by
-// AL_MAX_VERTS): triangles, quads, and the contract's maximum. Cost falls with it
-// (fewer edges to clip and integrate); the sizes between bought little and each
-// doubled the variants to build and check.
-const int kVerts[] = {3, 4, 8};
 
-// The (dist, method, light) families with an implementation. Adding a method is
-// a template plus a row here.
-struct Family {
-    Distribution dist;
-    Method method;
-    LightType light;
+// How a key's effective value becomes a preprocessor switch.
+struct DefineRule {
+    enum class Form {
+        None,    // no define
+        OneHot,  // NAME<VALUE> 1, the value upper-cased (AL_METHOD_EXACT 1)
+        Number,  // NAME <value> (AL_NODES 16)
+        Mapped,  // NAME <map[value]>; a value the map does not list defines nothing
+    };
+    Form form = Form::None;
+    std::string name;
+    std::vector<std::pair<std::string, std::string>> map;
 };
-const Family kFamilies[] = {
-    {Distribution::Phong, Method::Exact, LightType::Polygon},
-    {Distribution::Phong, Method::Arvo, LightType::Polygon},
-    {Distribution::Phong, Method::Lorentz, LightType::Polygon},
-    {Distribution::Phong, Method::Pearson, LightType::Polygon},
-    {Distribution::Phong, Method::Ellipsoid, LightType::Polygon},
-    {Distribution::Phong, Method::Point, LightType::Polygon},
-};
-
-bool has_family(const Variant& v) {
-    return std::any_of(std::begin(kFamilies), std::end(kFamilies), [&](const Family& f) {
-        return f.dist == v.dist && f.method == v.method && f.light == v.light;
-    });
+DefineRule one_hot(const char* prefix) {
+    return {DefineRule::Form::OneHot, prefix, {}};
 }
-bool uses_verts(const Variant& v) {
-    return v.light == LightType::Polygon;
+DefineRule number(const char* name) {
+    return {DefineRule::Form::Number, name, {}};
 }
-bool uses_nodes(const Variant& v) {
-    return v.method == Method::Exact;
+DefineRule mapped(const char* name, std::vector<std::pair<std::string, std::string>> map) {
+    return {DefineRule::Form::Mapped, name, std::move(map)};
 }
-bool uses_precision(const Variant& v) {
-    return v.method == Method::Exact;
-}
-bool uses_peak_keys(const Variant& v) {
-    return is_peak_method(v.method);
-}
-template <class T, std::size_t N>
-bool contains(const T (&values)[N], const T& x) {
-    return std::find(std::begin(values), std::end(values), x) != std::end(values);
+// A boolean feature: defined (as 1) only when on.
+DefineRule flag(const char* name, const char* on_value) {
+    return mapped(name, {{on_value, "1"}});
 }
 
-template <class T, std::size_t N>
-std::string choices(const T (&values)[N]) {
-    std::string s;
-    for (const auto& x : values) s += (s.empty() ? "" : ", ") + std::string(to_string(x));
+std::string upper(std::string s) {
+    for (auto& ch : s) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
     return s;
 }
 
-template <class T, std::size_t N>
-std::optional<T> lookup(const T (&values)[N], const std::string& name) {
-    for (const auto& x : values)
-        if (name == to_string(x)) return x;
+std::optional<std::pair<std::string, std::string>> define_of(const DefineRule& rule,
+                                                             const std::string& value) {
+    switch (rule.form) {
+        case DefineRule::Form::None:
+            return std::nullopt;
+        case DefineRule::Form::OneHot:
+            return std::make_pair(rule.name + upper(value), std::string("1"));
+        case DefineRule::Form::Number:
+            return std::make_pair(rule.name, value);
+        case DefineRule::Form::Mapped:
+            for (const auto& [from, to] : rule.map)
+                if (from == value) return std::make_pair(rule.name, to);
+            return std::nullopt;
+    }
     return std::nullopt;
+}
+
+std::string value_string(int x) {
+    return std::to_string(x);
+}
+template <class T>
+std::string value_string(T x) {
+    return to_string(x);
+}
+
+// One row of the key table.
+struct KeyRow {
+    std::string name;
+    std::vector<std::string> values;  // every accepted value, in enumeration and message order
+    bool numeric = false;             // an integer: "08" reads as 8; "value 'x' is not one of"
+    bool required = false;            // dist, method, light: no default, always named
+    std::function<std::string(const Variant&)> get;
+    std::function<void(Variant&, const std::string&)> set;  // a value from `values`
+    DefineRule define;
+    // The effective value of a variant whose family does not use the key, where it
+    // has one (precision: fp32); without it such a variant has no value for the key.
+    std::optional<std::string> unused_value;
+    std::string doc;
+    std::string default_value;  // get(Variant{}): the field's initialiser is the default
+    // Where the key applies, declared, as (required key, values): for a key every
+    // family uses today but that belongs to some of them only (verts: polygons), so
+    // that a name without a family (light=disk) is told so. Without it, where it
+    // applies is derived from the families that name it.
+    std::vector<std::pair<std::string, std::vector<std::string>>> where;
+
+    KeyRow unused_as(const char* value) && {
+        unused_value = value;
+        return std::move(*this);
+    }
+    KeyRow only_where(const char* key, std::vector<std::string> values) && {
+        where.emplace_back(key, std::move(values));
+        return std::move(*this);
+    }
+};
+
+// A row for `field` of Variant over `values` (enumerators or integers, in order).
+template <class T, std::size_t N>
+KeyRow key(const char* name, T Variant::*field, const T (&values)[N], DefineRule define,
+           const char* doc) {
+    KeyRow r;
+    r.name = name;
+    for (const T& x : values) r.values.push_back(value_string(x));
+    r.numeric = std::is_same_v<T, int>;
+    r.get = [field](const Variant& v) { return value_string(v.*field); };
+    r.set = [field, list = std::vector<T>(std::begin(values), std::end(values))](
+                Variant& v, const std::string& s) {
+        for (const T& x : list)
+            if (value_string(x) == s) v.*field = x;
+    };
+    r.define = std::move(define);
+    r.doc = doc;
+    r.default_value = r.get(Variant{});
+    return r;
+}
+template <class T, std::size_t N>
+KeyRow required_key(const char* name, T Variant::*field, const T (&values)[N], DefineRule define,
+                    const char* doc) {
+    KeyRow r = key(name, field, values, std::move(define), doc);
+    r.required = true;
+    r.default_value.clear();
+    return r;
+}
+
+// The key table, in canonical-name order (which is also the enumeration order: the
+// first further key varies slowest). A new key: a field in Variant, initialised to
+// its default, and a row here; the family rows then name it where it applies.
+// verts: the templates size their per-vertex arrays by AL_MAX_VERTS: triangles,
+// quads, and the contract's maximum. Cost falls with it (fewer edges to clip and
+// integrate); the sizes between bought little and each doubled the variants.
+std::vector<KeyRow> key_rows() {
+    // clang-format off
+    return {
+        //           name         Variant field          values          #define
+        required_key("dist",      &Variant::dist,        kDists,         one_hot("AL_DIST_"),
+                     "microfacet distribution (contract-fixed)"),
+        required_key("method",    &Variant::method,      kMethods,       one_hot("AL_METHOD_"),
+                     "how the integral is computed: exact quadrature reference, arvo's "
+                     "recurrence, lorentz/pearson/ellipsoid peak functions, point baseline"),
+        required_key("light",     &Variant::light,       kLights,        one_hot("AL_LIGHT_"),
+                     "light shape"),
+        key("sided",              &Variant::sided,       kSided,
+            mapped("AL_SIDED", {{"any", "0"}, {"one", "1"}, {"two", "2"}}),
+            "any: each case's two_sided flag at run time; one, two: compiled in"),
+        key("verts",              &Variant::verts,       {3, 4, 8},      number("AL_MAX_VERTS"),
+            "largest polygon compiled in (sizes the per-vertex arrays)")
+            .only_where("light", {"polygon"}),
+        key("nodes",              &Variant::nodes,       {2, 3, 8, 12, 16, 24}, number("AL_NODES"),
+            "Gauss-Legendre quadrature nodes per edge (per piece of an arc, microfacets)"),
+        key("precision",          &Variant::precision,   kPrecisions,
+            mapped("AL_PRECISION_FP64", {{"fp64", "1"}, {"fp32", "0"}}),
+            "arithmetic precision of the shader math (fp32 where the family has no choice)")
+            .unused_as("fp32"),
+        key("fit",                &Variant::fit,         kFits,          flag("AL_FIT_PAPER", "paper"),
+            "peak-function fitting recipe: tuned (ours) or paper (seed 000 as printed)"),
+        key("specular",           &Variant::specular,    kSpecularForms, flag("AL_SPECULAR_SG", "sg"),
+            "double-axis moment: twoaxis (Arvo's relation) or sg (spherical Gaussians)"),
+        key("radial",             &Variant::radial,      {2, 4, 16},     number("AL_RADIAL"),
+            "radial Gauss-Legendre nodes of the exact microfacet specular rule"),
+    };
+    // clang-format on
+}
+
+// The family table: one row per implemented (dist, method, light). keys: the further
+// keys the family uses, each with the values enumerated for it, which are exactly
+// the values valid for it ({} = every value of the key); a key it does not name
+// stays at its default. templates: what it stitches, in order, between
+// templates/common.glsl and (GLSL only) templates/entry.glsl. Boundary-integral
+// methods share the per-arc geometry (<dist>_edge), then integrate each edge their
+// own way; all but arvo (its own recurrence and accumulator) share the accumulator
+// (<dist>_boundary); the polygon's clipping streams arcs into it, so it comes after.
+std::vector<VariantFamily> family_rows() {
+    using D = Distribution;
+    using M = Method;
+    using L = LightType;
+    // clang-format off
+    return {
+        // dist     method        light       keys ({} = all values)
+        //   templates
+        {D::Phong, M::Exact,     L::Polygon, {{"sided"}, {"verts"}, {"nodes", {"8", "12", "16", "24"}}, {"precision"}},
+            {"dist_phong.glsl", "phong_edge.glsl", "method_exact_phong.glsl", "phong_boundary.glsl",
+             "polygon.glsl", "light_polygon.glsl"}},
+        {D::Phong, M::Arvo,      L::Polygon, {{"sided"}, {"verts"}},
+            {"dist_phong.glsl", "phong_edge.glsl", "method_arvo_phong.glsl",
+             "polygon.glsl", "light_polygon.glsl"}},
+        {D::Phong, M::Lorentz,   L::Polygon, {{"sided"}, {"verts"}, {"fit"}, {"specular"}},
+            {"dist_phong.glsl", "phong_edge.glsl", "method_peak_phong.glsl", "phong_boundary.glsl",
+             "polygon.glsl", "light_polygon.glsl"}},
+        {D::Phong, M::Pearson,   L::Polygon, {{"sided"}, {"verts"}, {"fit"}, {"specular"}},
+            {"dist_phong.glsl", "phong_edge.glsl", "method_peak_phong.glsl", "phong_boundary.glsl",
+             "polygon.glsl", "light_polygon.glsl"}},
+        {D::Phong, M::Ellipsoid, L::Polygon, {{"sided"}, {"verts"}, {"fit"}, {"specular"}},
+            {"dist_phong.glsl", "phong_edge.glsl", "method_peak_phong.glsl", "phong_boundary.glsl",
+             "polygon.glsl", "light_polygon.glsl"}},
+        {D::Phong, M::Point,     L::Polygon, {{"sided"}, {"verts"}},
+            {"dist_phong.glsl", "polygon.glsl", "light_polygon.glsl"}},
+        {D::Blinn, M::Exact, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"nodes", {"2", "3", "16"}}, {"precision"}, {"radial", {"2", "16"}}},
+            {"dist_blinn.glsl", "microfacet.glsl", "blinn_radial.glsl", "method_exact_microfacet.glsl", "polygon.glsl",
+             "light_polygon.glsl"}},
+        {D::Blinn, M::Point, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}},
+            {"dist_blinn.glsl", "microfacet.glsl", "microfacet_brdf.glsl", "polygon.glsl", "light_polygon.glsl"}},
+        {D::Beckmann, M::Exact, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"nodes", {"2", "3", "16"}}, {"precision"}, {"radial", {"2", "16"}}},
+            {"dist_beckmann.glsl", "microfacet.glsl", "beckmann_radial.glsl", "method_exact_microfacet.glsl", "polygon.glsl",
+             "light_polygon.glsl"}},
+        {D::Beckmann, M::Point, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}},
+            {"dist_beckmann.glsl", "microfacet.glsl", "microfacet_brdf.glsl", "polygon.glsl", "light_polygon.glsl"}},
+        {D::Ggx, M::Exact, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"nodes", {"2", "3", "16"}}, {"precision"}, {"radial", {"2", "16"}}},
+            {"dist_ggx.glsl", "microfacet.glsl", "ggx_radial.glsl", "method_exact_microfacet.glsl", "polygon.glsl",
+             "light_polygon.glsl"}},
+        {D::Ggx, M::Point, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}},
+            {"dist_ggx.glsl", "microfacet.glsl", "microfacet_brdf.glsl", "polygon.glsl", "light_polygon.glsl"}},
+    };
+    // clang-format on
+}
+
+// Where a key applies, as the error messages name it: the row's declared `where`,
+// else the smallest set of (dist, method, light) values, over as few of those keys
+// as possible, whose families are exactly the ones that name the key (none: every
+// family names it). It also decides, for a variant with no family (its name is
+// rejected anyway), whether the key applies to it, so that such a name is told the
+// nearer problem.
+struct Scope {
+    bool found = false;  // false: no such set (the text lists the families)
+    std::vector<std::pair<std::size_t, std::vector<std::string>>> axes;  // key index, values
+    std::string text;
+};
+
+struct Tables {
+    std::vector<KeyRow> keys;
+    std::vector<VariantFamily> families;  // key value lists resolved
+    // uses[f][k]: family f's values of key k, or nullopt where it does not use it.
+    std::vector<std::vector<std::optional<std::vector<std::string>>>> uses;
+    std::vector<Scope> scopes;  // per key
+    std::vector<KeyInfo> info;
+};
+
+bool contains(const std::vector<std::string>& values, const std::string& x) {
+    return std::find(values.begin(), values.end(), x) != values.end();
+}
+
+std::string join(const std::vector<std::string>& values, const char* sep = ", ") {
+    std::string s;
+    for (const auto& x : values) s += (s.empty() ? "" : sep) + x;
+    return s;
+}
+
+Variant base_of(const VariantFamily& f) {
+    Variant v;
+    v.dist = f.dist;
+    v.method = f.method;
+    v.light = f.light;
+    return v;
+}
+
+std::string family_name(const Variant& v) {
+    return fmt::format("dist={},method={},light={}", to_string(v.dist), to_string(v.method),
+                       to_string(v.light));
+}
+
+// "method=lorentz, pearson, ellipsoid", keys in table order joined by " and ".
+std::string scope_text(const Tables& t, Scope& s) {
+    std::sort(s.axes.begin(), s.axes.end());
+    std::vector<std::string> parts;
+    for (const auto& [axis, values] : s.axes)
+        parts.push_back(t.keys[axis].name + "=" + join(values));
+    return join(parts, " and ");
+}
+
+Scope scope_of(const Tables& t, std::size_t k) {
+    std::vector<std::size_t> fixed;  // the required keys, most specific (latest) first
+    for (std::size_t i = t.keys.size(); i-- > 0;)
+        if (t.keys[i].required) fixed.push_back(i);
+    std::vector<bool> in(t.families.size());
+    for (std::size_t f = 0; f < t.families.size(); ++f) in[f] = t.uses[f][k].has_value();
+    if (std::find(in.begin(), in.end(), true) == in.end()) return {false, {}, "no family"};
+    Scope best;
+    std::size_t best_axes = 0, best_cost = 0;
+    // Fewest keys, then fewest values; on a tie the earlier mask (light, then method).
+    for (unsigned mask = 0; mask < (1u << fixed.size()); ++mask) {
+        Scope s;
+        std::size_t cost = 0;
+        for (std::size_t a = 0; a < fixed.size(); ++a) {
+            if (!(mask & (1u << a))) continue;
+            const KeyRow& axis = t.keys[fixed[a]];
+            std::vector<std::string> values;
+            for (const auto& x : axis.values) {
+                for (std::size_t f = 0; f < t.families.size(); ++f)
+                    if (in[f] && axis.get(base_of(t.families[f])) == x) {
+                        values.push_back(x);
+                        break;
+                    }
+            }
+            cost += values.size();
+            s.axes.emplace_back(fixed[a], std::move(values));
+        }
+        bool exact = true;
+        for (std::size_t f = 0; f < t.families.size() && exact; ++f) {
+            bool inside = true;
+            for (const auto& [axis, values] : s.axes)
+                inside = inside && contains(values, t.keys[axis].get(base_of(t.families[f])));
+            exact = inside == in[f];
+        }
+        if (!exact) continue;
+        if (best.found &&
+            (s.axes.size() > best_axes || (s.axes.size() == best_axes && cost >= best_cost)))
+            continue;
+        s.found = true;
+        best = std::move(s);
+        best_axes = best.axes.size();
+        best_cost = cost;
+    }
+    if (best.found) {
+        best.text = scope_text(t, best);
+    } else {
+        std::vector<std::string> names;
+        for (std::size_t f = 0; f < t.families.size(); ++f)
+            if (in[f]) names.push_back(family_name(base_of(t.families[f])));
+        best.text = join(names, "; ");
+    }
+    return best;
+}
+
+Scope declared_scope(const Tables& t, const KeyRow& row) {
+    Scope s;
+    s.found = true;
+    for (const auto& [name, values] : row.where) {
+        for (std::size_t i = 0; i < t.keys.size(); ++i)
+            if (t.keys[i].name == name) s.axes.emplace_back(i, values);
+    }
+    s.text = scope_text(t, s);
+    return s;
+}
+
+const Tables& tables() {
+    static const Tables t = [] {
+        Tables t;
+        t.keys = key_rows();
+        t.families = family_rows();
+        for (auto& f : t.families) {
+            for (auto& fk : f.keys) {
+                for (const auto& row : t.keys)
+                    if (row.name == fk.key && fk.values.empty()) fk.values = row.values;
+            }
+        }
+        for (const auto& f : t.families) {
+            std::vector<std::optional<std::vector<std::string>>> uses(t.keys.size());
+            for (const auto& fk : f.keys) {
+                for (std::size_t k = 0; k < t.keys.size(); ++k)
+                    if (t.keys[k].name == fk.key) uses[k] = fk.values;
+            }
+            t.uses.push_back(std::move(uses));
+        }
+        for (std::size_t k = 0; k < t.keys.size(); ++k) {
+            const KeyRow& row = t.keys[k];
+            t.scopes.push_back(row.required ? Scope{true, {}, ""} : scope_of(t, k));
+            if (!row.where.empty()) t.scopes.back() = declared_scope(t, row);
+            t.info.push_back({row.name, row.values, row.default_value, row.required, row.doc,
+                              t.scopes.back().text});
+        }
+        return t;
+    }();
+    return t;
+}
+
+std::optional<std::size_t> key_index(const std::string& name) {
+    const auto& keys = tables().keys;
+    for (std::size_t k = 0; k < keys.size(); ++k)
+        if (keys[k].name == name) return k;
+    return std::nullopt;
+}
+
+std::optional<std::size_t> family_index(const Variant& v) {
+    const auto& families = tables().families;
+    for (std::size_t f = 0; f < families.size(); ++f) {
+        const auto& row = families[f];
+        if (row.dist == v.dist && row.method == v.method && row.light == v.light) return f;
+    }
+    return std::nullopt;
+}
+
+// Whether key k is one the variant uses: its family names it; without a family,
+// whether the variant lies in the key's scope.
+bool applies(const Variant& v, std::size_t k) {
+    const Tables& t = tables();
+    if (t.keys[k].required) return true;
+    if (auto f = family_index(v)) return t.uses[*f][k].has_value();
+    const Scope& s = t.scopes[k];
+    if (!s.found) return false;
+    for (const auto& [axis, values] : s.axes)
+        if (!contains(values, t.keys[axis].get(v))) return false;
+    return true;
+}
+
+// The value the variant has for key k: its field where the key applies, else the
+// key's unused value where it has one.
+std::optional<std::string> effective_value(const Variant& v, std::size_t k) {
+    const KeyRow& row = tables().keys[k];
+    if (applies(v, k)) return row.get(v);
+    return row.unused_value;
 }
 
 bool is_digit(char c) {
@@ -92,6 +432,26 @@ std::optional<int> parse_int(const std::string& s) {
     if (s.empty() || s.size() > 3 || !std::all_of(s.begin(), s.end(), is_digit))
         return std::nullopt;
     return std::stoi(s);
+}
+
+// The value as the key spells it ("08" is 8 for a number), or nullopt.
+std::optional<std::string> accept(const KeyRow& row, const std::string& value) {
+    std::string s = value;
+    if (row.numeric) {
+        auto n = parse_int(value);
+        if (!n) return std::nullopt;
+        s = std::to_string(*n);
+    }
+    if (!contains(row.values, s)) return std::nullopt;
+    return s;
+}
+
+std::string bad_value(const KeyRow& row, const std::string& value) {
+    if (row.numeric)
+        return fmt::format("key '{}': value '{}' is not one of {}", row.name, value,
+                           join(row.values));
+    return fmt::format("key '{}': unknown value '{}' (expected {})", row.name, value,
+                       join(row.values));
 }
 
 // Splits "a=b,c=d" into ordered pairs; nullopt (with a message) on bad syntax.
@@ -117,6 +477,12 @@ std::optional<std::vector<std::pair<std::string, std::string>>> split(const std:
 }
 
 }  // namespace
+
+bool Variant::operator==(const Variant& o) const {
+    for (const auto& row : tables().keys)
+        if (row.get(*this) != row.get(o)) return false;
+    return true;
+}
 
 const char* to_string(Method m) {
     switch (m) {
@@ -148,7 +514,11 @@ const char* to_string(Precision p) {
     return p == Precision::Fp64 ? "fp64" : "fp32";
 }
 Precision effective_precision(const Variant& v) {
-    return uses_precision(v) ? v.precision : Precision::Fp32;
+    static const std::size_t k = *key_index("precision");
+    const auto value = effective_value(v, k);
+    for (Precision p : kPrecisions)
+        if (value && *value == to_string(p)) return p;
+    return Precision::Fp32;
 }
 const char* to_string(Sided s) {
     switch (s) {
@@ -162,7 +532,21 @@ const char* to_string(Sided s) {
     return "any";
 }
 
+const std::vector<KeyInfo>& variant_keys() {
+    return tables().info;
+}
+
+const std::vector<VariantFamily>& variant_families() {
+    return tables().families;
+}
+
+const VariantFamily* find_family(const Variant& v) {
+    const auto f = family_index(v);
+    return f ? &tables().families[*f] : nullptr;
+}
+
 std::optional<Variant> parse_variant(const std::string& name, const DiagnosticConsumer& diag) {
+    const Tables& t = tables();
     auto fail = [&](const std::string& what) -> std::optional<Variant> {
         if (diag) diag({Severity::Error, "", 0, fmt::format("variant '{}': {}", name, what)});
         return std::nullopt;
@@ -174,150 +558,98 @@ std::optional<Variant> parse_variant(const std::string& name, const DiagnosticCo
     std::map<std::string, std::string> seen;
     for (const auto& [key, value] : *pairs) {
         if (!seen.emplace(key, value).second) return fail(fmt::format("key '{}' given twice", key));
-        // Each sets its field from the value, or returns the message saying why not.
-        auto pick = [&](const auto& values, auto& field) -> std::optional<std::string> {
-            auto x = lookup(values, value);
-            if (!x)
-                return fmt::format("key '{}': unknown value '{}' (expected {})", key, value,
-                                   choices(values));
-            field = *x;
-            return std::nullopt;
-        };
-        auto pick_int = [&](const auto& values, int& field) -> std::optional<std::string> {
-            auto n = parse_int(value);
-            if (!n || !contains(values, *n))
-                return fmt::format("key '{}': value '{}' is not one of {}", key, value,
-                                   fmt::join(values, ", "));
-            field = *n;
-            return std::nullopt;
-        };
-        std::optional<std::string> error;
-        if (key == "dist") {
-            error = pick(kDists, v.dist);
-        } else if (key == "method") {
-            error = pick(kMethods, v.method);
-        } else if (key == "light") {
-            error = pick(kLights, v.light);
-        } else if (key == "sided") {
-            error = pick(kSided, v.sided);
-        } else if (key == "verts") {
-            error = pick_int(kVerts, v.verts);
-        } else if (key == "nodes") {
-            error = pick_int(kNodes, v.nodes);
-        } else if (key == "precision") {
-            error = pick(kPrecisions, v.precision);
-        } else if (key == "fit") {
-            error = pick(kFits, v.fit);
-        } else if (key == "specular") {
-            error = pick(kSpecularForms, v.specular);
-        } else {
-            return fail(
-                fmt::format("unknown key '{}' (keys: dist, method, light, sided, verts, "
-                            "nodes, precision, fit, specular)",
-                            key));
+        const auto k = key_index(key);
+        if (!k) {
+            std::vector<std::string> names;
+            for (const auto& row : t.keys) names.push_back(row.name);
+            return fail(fmt::format("unknown key '{}' (keys: {})", key, join(names)));
         }
-        if (error) return fail(*error);
+        const auto spelled = accept(t.keys[*k], value);
+        if (!spelled) return fail(bad_value(t.keys[*k], value));
+        t.keys[*k].set(v, *spelled);
     }
-    for (const char* required : {"dist", "method", "light"}) {
-        if (!seen.count(required)) return fail(fmt::format("key '{}' is required", required));
+    for (const auto& row : t.keys) {
+        if (row.required && !seen.count(row.name))
+            return fail(fmt::format("key '{}' is required", row.name));
     }
-    if (seen.count("verts") && !uses_verts(v))
-        return fail("key 'verts' applies to light=polygon only");
-    if (seen.count("nodes") && !uses_nodes(v))
-        return fail("key 'nodes' applies to method=exact only");
-    if (seen.count("precision") && !uses_precision(v))
-        return fail("key 'precision' applies to method=exact only");
-    for (const char* k : {"fit", "specular"}) {
-        if (seen.count(k) && !uses_peak_keys(v))
+    for (std::size_t k = 0; k < t.keys.size(); ++k) {
+        if (seen.count(t.keys[k].name) && !applies(v, k))
             return fail(
-                fmt::format("key '{}' applies to method=lorentz, pearson, ellipsoid only", k));
+                fmt::format("key '{}' applies to {} only", t.keys[k].name, t.scopes[k].text));
     }
-    if (!has_family(v)) {
-        return fail(fmt::format("no variant for dist={},method={},light={} yet", to_string(v.dist),
-                                to_string(v.method), to_string(v.light)));
+    const auto f = family_index(v);
+    if (!f) return fail(fmt::format("no variant for {} yet", family_name(v)));
+    // A family may offer fewer values of a key than the key has.
+    for (std::size_t k = 0; k < t.keys.size(); ++k) {
+        const auto& values = t.uses[*f][k];
+        const KeyRow& row = t.keys[k];
+        if (!values || contains(*values, row.get(v))) continue;
+        if (seen.count(row.name))
+            return fail(fmt::format("key '{}': value '{}' is not offered for {} (expected {})",
+                                    row.name, seen[row.name], family_name(v), join(*values)));
+        return fail(
+            fmt::format("key '{}' must be given for {}: its default {} is not offered "
+                        "(expected {})",
+                        row.name, family_name(v), row.default_value, join(*values)));
     }
     return v;
 }
 
 bool is_valid(const Variant& v) {
-    const Variant d;
-    const bool sided_ok = contains(kSided, v.sided);
-    const bool verts_ok = uses_verts(v) ? contains(kVerts, v.verts) : v.verts == d.verts;
-    const bool nodes_ok = uses_nodes(v) ? contains(kNodes, v.nodes) : v.nodes == d.nodes;
-    const bool precision_ok = uses_precision(v) || v.precision == d.precision;
-    const bool peak_ok = uses_peak_keys(v) || (v.fit == d.fit && v.specular == d.specular);
-    return has_family(v) && sided_ok && verts_ok && nodes_ok && precision_ok && peak_ok;
+    const Tables& t = tables();
+    const auto f = family_index(v);
+    if (!f) return false;
+    for (std::size_t k = 0; k < t.keys.size(); ++k) {
+        const KeyRow& row = t.keys[k];
+        if (row.required) continue;
+        const auto& values = t.uses[*f][k];
+        const std::string value = row.get(v);
+        if (values ? !contains(*values, value) : value != row.default_value) return false;
+    }
+    return true;
 }
 
 std::string canonical_name(const Variant& v) {
-    const Variant d;
-    std::string s = fmt::format("dist={},method={},light={}", to_string(v.dist),
-                                to_string(v.method), to_string(v.light));
-    if (v.sided != d.sided) s += fmt::format(",sided={}", to_string(v.sided));
-    if (uses_verts(v) && v.verts != d.verts) s += fmt::format(",verts={}", v.verts);
-    if (uses_nodes(v) && v.nodes != d.nodes) s += fmt::format(",nodes={}", v.nodes);
-    if (uses_precision(v) && v.precision != d.precision)
-        s += fmt::format(",precision={}", to_string(v.precision));
-    if (uses_peak_keys(v) && v.fit != d.fit) s += fmt::format(",fit={}", to_string(v.fit));
-    if (uses_peak_keys(v) && v.specular != d.specular)
-        s += fmt::format(",specular={}", to_string(v.specular));
+    const Tables& t = tables();
+    std::string s = family_name(v);
+    for (std::size_t k = 0; k < t.keys.size(); ++k) {
+        const KeyRow& row = t.keys[k];
+        if (row.required || !applies(v, k)) continue;
+        const std::string value = row.get(v);
+        if (value != row.default_value) s += fmt::format(",{}={}", row.name, value);
+    }
     return s;
 }
 
 std::vector<Variant> enumerate_variants() {
+    const Tables& t = tables();
     std::vector<Variant> out;
-    for (const auto& f : kFamilies) {
-        Variant base;
-        base.dist = f.dist;
-        base.method = f.method;
-        base.light = f.light;
-        for (Sided s : kSided) {
-            for (int verts : kVerts) {
-                if (!uses_verts(base) && verts != kVerts[0]) continue;
-                for (int nodes : kNodes) {
-                    if (!uses_nodes(base) && nodes != kNodes[0]) continue;
-                    for (Precision p : kPrecisions) {
-                        if (!uses_precision(base) && p != kPrecisions[0]) continue;
-                        for (Fit fit : kFits) {
-                            if (!uses_peak_keys(base) && fit != kFits[0]) continue;
-                            for (SpecularForm sf : kSpecularForms) {
-                                if (!uses_peak_keys(base) && sf != kSpecularForms[0]) continue;
-                                Variant v = base;
-                                v.sided = s;
-                                if (uses_verts(v)) v.verts = verts;
-                                if (uses_nodes(v)) v.nodes = nodes;
-                                if (uses_precision(v)) v.precision = p;
-                                if (uses_peak_keys(v)) {
-                                    v.fit = fit;
-                                    v.specular = sf;
-                                }
-                                out.push_back(v);
-                            }
-                        }
-                    }
-                }
-            }
+    for (std::size_t f = 0; f < t.families.size(); ++f) {
+        // The family's keys in table order; the last varies fastest.
+        std::vector<std::pair<const KeyRow*, const std::vector<std::string>*>> axes;
+        for (std::size_t k = 0; k < t.keys.size(); ++k)
+            if (t.uses[f][k]) axes.emplace_back(&t.keys[k], &*t.uses[f][k]);
+        std::vector<std::size_t> at(axes.size(), 0);
+        for (;;) {
+            Variant v = base_of(t.families[f]);
+            for (std::size_t a = 0; a < axes.size(); ++a)
+                axes[a].first->set(v, (*axes[a].second)[at[a]]);
+            out.push_back(v);
+            std::size_t a = axes.size();
+            while (a > 0 && ++at[a - 1] == axes[a - 1].second->size()) at[--a] = 0;
+            if (a == 0) break;
         }
     }
     return out;
 }
 
 std::vector<std::pair<std::string, std::string>> variant_defines(const Variant& v) {
+    const Tables& t = tables();
     std::vector<std::pair<std::string, std::string>> d;
-    auto upper = [](std::string s) {
-        for (auto& ch : s) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
-        return s;
-    };
-    d.emplace_back("AL_DIST_" + upper(to_string(v.dist)), "1");
-    d.emplace_back("AL_METHOD_" + upper(to_string(v.method)), "1");
-    d.emplace_back("AL_LIGHT_" + upper(to_string(v.light)), "1");
-    d.emplace_back("AL_SIDED", v.sided == Sided::Any ? "0" : v.sided == Sided::One ? "1" : "2");
-    if (uses_verts(v)) d.emplace_back("AL_MAX_VERTS", std::to_string(v.verts));
-    if (uses_nodes(v)) d.emplace_back("AL_NODES", std::to_string(v.nodes));
-    d.emplace_back("AL_PRECISION_FP64", effective_precision(v) == Precision::Fp64 ? "1" : "0");
-    if (uses_peak_keys(v)) {
-        if (v.fit == Fit::Paper) d.emplace_back("AL_FIT_PAPER", "1");
-        if (v.specular == SpecularForm::Sg) d.emplace_back("AL_SPECULAR_SG", "1");
+    for (std::size_t k = 0; k < t.keys.size(); ++k) {
+        const auto value = effective_value(v, k);
+        if (!value) continue;
+        if (auto define = define_of(t.keys[k].define, *value)) d.push_back(std::move(*define));
     }
     return d;
 }
@@ -327,28 +659,10 @@ bool variant_matches(const Variant& v, const std::string& pattern) {
     auto pairs = split(pattern, why);
     if (!pairs) return false;
     for (const auto& [key, value] : *pairs) {
-        std::string actual;
-        if (key == "dist")
-            actual = to_string(v.dist);
-        else if (key == "method")
-            actual = to_string(v.method);
-        else if (key == "light")
-            actual = to_string(v.light);
-        else if (key == "sided")
-            actual = to_string(v.sided);
-        else if (key == "verts" && uses_verts(v))
-            actual = std::to_string(v.verts);
-        else if (key == "nodes" && uses_nodes(v))
-            actual = std::to_string(v.nodes);
-        else if (key == "precision")
-            actual = to_string(effective_precision(v));
-        else if (key == "fit" && uses_peak_keys(v))
-            actual = to_string(v.fit);
-        else if (key == "specular" && uses_peak_keys(v))
-            actual = to_string(v.specular);
-        else
-            return false;  // unknown, or a key this variant has no value for
-        if (actual != value) return false;
+        const auto k = key_index(key);
+        if (!k) return false;
+        const auto actual = effective_value(v, *k);
+        if (!actual || *actual != value) return false;  // or a key it has no value for
     }
     return true;
 }

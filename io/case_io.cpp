@@ -358,7 +358,23 @@ class CaseReader {
         } else {
             fail("material.distribution",
                  "unknown distribution '" + name + "' (expected phong, blinn, beckmann or ggx)");
+            return;
         }
+        // Phong has no Fresnel factor: its f0 is an unknown field and ignored (CONTRACT 2, 3).
+        if (m.distribution != Distribution::Phong) read_f0(M, m);
+    }
+
+    // The optional Schlick f0 of a microfacet material (CONTRACT 2): absent leaves F = 1.
+    void read_f0(const json& M, Material& m) {
+        if (M.find("f0") == M.end()) return;
+        double f0 = 0.0;
+        if (!number(M, "f0", "material.f0", f0)) return;
+        if (!(f0 >= 0.0 && f0 <= 1.0)) {
+            fail("material.f0", fmt::format("{:g} is outside [0, 1]", f0));
+            return;
+        }
+        m.f0 = f0;
+        m.has_f0 = true;
     }
 
   private:

@@ -61,4 +61,10 @@ double smith_lambda(const Material& m, const Vec3& n, const Vec3& w) {
     return 0.5 * (std::exp(-a * a) / (a * std::sqrt(kPi)) - std::erfc(a));
 }
 
+double schlick_fresnel(double f0, const Vec3& w, const Vec3& v) {
+    const double x = norm2(w - v) / (2.0 * (2.0 + norm(w + v)));
+    const double x2 = x * x;
+    return f0 + (1.0 - f0) * (x2 * x2 * x);
+}
+
 }  // namespace arealight::ref

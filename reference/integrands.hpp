@@ -18,4 +18,8 @@ double ndf_value(const Material& m, const Vec3& n, const Vec3& h);
 // Smith Lambda(w) of the material for a unit direction w with n.w > 0.
 double smith_lambda(const Material& m, const Vec3& n, const Vec3& w);
 
+// Schlick's F = f0 + (1 - f0)(1 - h.v)^5 with h = normalize(w + v), for unit w and v.
+// 1 - h.v = 1 - |w + v| / 2 = |w - v|^2 / (2 (2 + |w + v|)) has no cancellation.
+double schlick_fresnel(double f0, const Vec3& w, const Vec3& v);
+
 }  // namespace arealight::ref

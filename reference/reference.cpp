@@ -284,7 +284,10 @@ CaseResult reference_case(const Case& c, const ReferenceOptions& opt) {
                        lit,
                        [&](const Vec3& w) {
                            const double g2 = 1.0 / (1.0 + smith_lambda(mat, fr.n, w) + lambda_v);
-                           return ndf_value(mat, fr.n, half(w)) * g2 / (4.0 * nv);
+                           const double f = ndf_value(mat, fr.n, half(w)) * g2 / (4.0 * nv);
+                           // Without f0 the integrand is left untouched, so results stay
+                           // bit-identical to those computed before f0 existed.
+                           return mat.has_f0 ? f * schlick_fresnel(mat.f0, w, fr.v) : f;
                        },
                        &fr.r, width, ridges, opt),
                    res.specular, res.error);

@@ -88,6 +88,8 @@ std::vector<float> pack_cases(const std::vector<const Case*>& cases) {
         o[12] = static_cast<float>(exponent ? m.exponent : m.alpha);
         o[13] = c.light.two_sided ? 1.0f : 0.0f;
         o[14] = static_cast<float>(c.light.vertices.size());
+        // Schlick f0 (CONTRACT.md 2); 1 when the case has none, which makes F = 1 exactly.
+        o[15] = static_cast<float>(m.f0);
         frame(scale(rel, 1.0 / dist), o + 16);
         // Offsets from the centre are formed in double, so small distant polygons
         // keep the relative precision of their edges.

@@ -15,7 +15,8 @@ const real AL_HALF_PI = AL_R(1.57079632679489661923);
 // to full relative precision (in a world frame the edges' distances to r would
 // carry 6e-8 absolute error). n, v unit; r = 2 (n.v) n - v formed on the host for
 // the same reason. verts = polygon vertices relative to the centre. params =
-// (exponent or alpha, two_sided, vertex count, 0). 208 bytes, std430.
+// (exponent or alpha, two_sided, vertex count, Schlick f0: 1 when the case has none).
+// 208 bytes, std430.
 struct AlCase {
     vec4 n;
     vec4 v;

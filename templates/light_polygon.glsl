@@ -4,6 +4,7 @@
 #ifdef AL_METHOD_POINT
 // Baseline: the polygon's centre as a point light of the same power, solid angle
 // ~ area cos(theta_l) / d^2. Error grows with the light's angular size; O(1), cheapest.
+// Returns (diffuse, specular, 0, 0) (CONTRACT.md 2; no ndf or moment).
 vec4 al_shade(AlCase c) {
     rvec3 n = rvec3(c.n);
     real side = al_polygon_side(c);
@@ -20,9 +21,52 @@ vec4 al_shade(AlCase c) {
     rvec3 w = centre * inversesqrt(d2);
     real solid_angle = abs(dot(area2, w)) * AL_R(0.5) / d2;
     real nw = max(dot(n, w), AL_R(0.0));
+#ifdef AL_DIST_PHONG
     real N = real(c.params.x);
     real spec = al_phong_brdf(rvec3(c.r), w, N) * nw * solid_angle;
+#else
+    real spec = al_microfacet_brdf_cos(n, rvec3(c.v), w, real(c.params.x), real(c.params.w)) *
+                solid_angle;
+#endif
     return vec4(nw / AL_PI * solid_angle, spec, AL_R(0.0), AL_R(0.0));
+}
+#endif
+
+#if !defined(AL_DIST_PHONG) && !defined(AL_METHOD_POINT)
+// Whether the mirror direction r lies in the light's solid angle, or within
+// 1e-5 rad of its boundary: the inward normals of the unclipped edges, oriented
+// as polygon.glsl walks them.
+bool al_polygon_holds(AlCase c, real side, rvec3 r) {
+    int count = int(c.params.z);
+    rvec3 center = rvec3(c.center);
+    bool inside = true;
+    for (int i = 0; i < AL_MAX_VERTS; ++i) {
+        if (i >= count) break;
+        int j = i + 1 < count ? i + 1 : 0;
+        int p = side > AL_R(0.0) ? j : i, q = side > AL_R(0.0) ? i : j;
+        rvec3 dp = rvec3(c.verts[p]), dq = rvec3(c.verts[q]);
+        rvec3 m = normalize(cross(center + dp, dq - dp));
+        inside = inside && dot(r, m) >= AL_R(-1e-5);
+    }
+    return inside;
+}
+
+// Diffuse, specular and ndf (CONTRACT.md 2) for a microfacet distribution: the
+// lit region (light clipped to the horizon of n, never to a lobe's hemisphere)
+// streamed into the half-vector accumulator.
+vec4 al_shade(AlCase c) {
+    rvec3 n = normalize(rvec3(c.n));
+    rvec3 v = normalize(rvec3(c.v));
+    real side = al_polygon_side(c);
+    if (side == AL_R(0.0)) return vec4(AL_R(0.0));
+    real nv = dot(n, v);
+    real param = real(c.params.x);
+    rvec3 r = normalize(rvec3(c.r));
+    bool direct = nv > AL_R(0.0) && al_polygon_holds(c, side, r);
+    AlMoments M = al_mf_begin(n, v, r, param, real(c.params.w), direct);
+    real diffuse = al_polygon_stream(c, side, n, n, false, param, M);
+    rvec2 sn = al_mf_end(M);
+    return vec4(diffuse, sn.x, sn.y, AL_R(0.0));
 }
 #endif
 
@@ -57,7 +101,7 @@ real al_specular_sg(AlCase c, real side, rvec3 r, rvec3 n, real N) {
 }
 #endif
 
-#ifndef AL_METHOD_POINT
+#if defined(AL_DIST_PHONG) && !defined(AL_METHOD_POINT)
 // Diffuse, specular and moment (CONTRACT.md 2) for Phong: clip by the horizon of n
 // (diffuse, exact) and by r's hemisphere ((r.w)_+ vanishes beyond), streaming the
 // arcs into the method's boundary moments (polygon.glsl).

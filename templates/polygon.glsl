@@ -37,8 +37,9 @@ rvec3 al_crossing(rvec3 a, rvec3 b, real da, real db) {
 
 #ifndef AL_METHOD_POINT
 // Streams the arcs of D = light ∩ {n.w >= 0} ∩ {axis.w >= 0} into the method's
-// accumulator and returns its moments (al_moments_end); `diffuse` receives the
-// irradiance / pi of light ∩ {n.w >= 0} (Lambert: sum arc_i (n.m_i) / (2 pi), exact).
+// accumulator M (al_moments_arc) and returns the irradiance / pi of light ∩ {n.w >= 0}
+// (Lambert: sum arc_i (n.m_i) / (2 pi), exact). Without clip_axis, D = light ∩
+// {n.w >= 0} (microfacet lobes live in half-vector space: no second clip).
 // The light is convex and lies in an open hemisphere, so each clip circle meets
 // the clipped boundary in at most one arc, shorter than pi. Iterations 0..count-1
 // take the light's edges, clipped to both hemispheres; iteration count the arc
@@ -46,11 +47,10 @@ rvec3 al_crossing(rvec3 a, rvec3 b, real da, real db) {
 // re-enters (clipped by the axis); iteration count+1 the arc along the axis's
 // circle between D's exit and entry points. All in one rolled loop, so the
 // method's per-arc code appears once.
-rvec2 al_polygon_moments(AlCase c, real side, rvec3 n, rvec3 axis, real N,
-                         AL_INOUT(real) diffuse) {
+real al_polygon_stream(AlCase c, real side, rvec3 n, rvec3 axis, bool clip_axis, real N,
+                       AL_INOUT(AlMoments) M) {
     int count = int(c.params.z);
     rvec3 center = rvec3(c.center);
-    AlMoments M = al_moments_begin(axis);
     real lit_sum = AL_R(0.0);
     rvec3 xn = rvec3(AL_R(0.0)), en = rvec3(AL_R(0.0));  // leaves / re-enters n's hemisphere
     rvec3 yo = rvec3(AL_R(0.0)), yi = rvec3(AL_R(0.0));  // leaves / re-enters the axis's, on D
@@ -71,7 +71,7 @@ rvec2 al_polygon_moments(AlCase c, real side, rvec3 n, rvec3 axis, real N,
             m = normalize(cross(center + dp, dq - dp));
             real na = dot(n, a), nb = dot(n, b), ra = dot(axis, a), rb = dot(axis, b);
             bool ia = na >= AL_R(0.0), ib = nb >= AL_R(0.0);
-            bool ja = ra >= AL_R(0.0), jb = rb >= AL_R(0.0);
+            bool ja = !clip_axis || ra >= AL_R(0.0), jb = !clip_axis || rb >= AL_R(0.0);
             rvec3 pn = ia != ib ? al_crossing(a, b, na, nb) : a;
             rvec3 pr = ja != jb ? al_crossing(a, b, ra, rb) : a;
             // Lit part (diffuse): the edge clipped to n's hemisphere.
@@ -110,7 +110,7 @@ rvec2 al_polygon_moments(AlCase c, real side, rvec3 n, rvec3 axis, real N,
             if (has_xn && has_en) {
                 lit_sum += al_arc(xn, en, n);
                 real rx = dot(axis, xn), re = dot(axis, en);
-                bool jx = rx >= AL_R(0.0), je = re >= AL_R(0.0);
+                bool jx = !clip_axis || rx >= AL_R(0.0), je = !clip_axis || re >= AL_R(0.0);
                 rvec3 q = jx != je ? al_crossing(xn, en, rx, re) : xn;
                 if (jx && !je) {
                     yo = q;
@@ -133,7 +133,16 @@ rvec2 al_polygon_moments(AlCase c, real side, rvec3 n, rvec3 axis, real N,
         }
         if (d_arc) al_moments_arc(M, a, b, m, axis, n, N);
     }
-    diffuse = lit_sum / AL_TWO_PI;
+    return lit_sum / AL_TWO_PI;
+}
+
+#ifdef AL_DIST_PHONG
+// The Phong moments about `axis` over D (al_moments_end), and D's diffuse.
+rvec2 al_polygon_moments(AlCase c, real side, rvec3 n, rvec3 axis, real N,
+                         AL_INOUT(real) diffuse) {
+    AlMoments M = al_moments_begin(axis);
+    diffuse = al_polygon_stream(c, side, n, axis, true, N, M);
     return al_moments_end(M, axis, n, N);
 }
+#endif
 #endif

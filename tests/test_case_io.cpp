@@ -419,6 +419,47 @@ TEST_CASE("malformed: ggx alpha out of range or missing", "[io]") {
                  "material.alpha", "missing");
 }
 
+TEST_CASE("f0 of a microfacet material is read in [0, 1]; absent means F = 1", "[io]") {
+    const std::string cases =
+        one_case("ggx-0", kQuad, R"({"distribution":"ggx","alpha":0.25,"f0":0})") + "," +
+        one_case("beckmann-004", kQuad, R"({"distribution":"beckmann","alpha":0.1,"f0":0.04})") +
+        "," + one_case("blinn-1", kQuad, R"({"distribution":"blinn","exponent":50,"f0":1})") + "," +
+        one_case("none") + "," +
+        // Phong has no Fresnel factor: f0 is an unknown field there, ignored even out of range.
+        one_case("phong", kQuad, R"({"distribution":"phong","exponent":10,"f0":1.5})");
+    const Parsed p = parse(file_with(cases));
+    INFO("messages:\n" << p.all());
+    REQUIRE(p.set);
+    CHECK(p.diags.empty());
+    const auto& c = p.set->cases;
+    REQUIRE(c.size() == 5);
+    CHECK(c[0].material.has_f0);
+    CHECK(c[0].material.f0 == 0.0);
+    CHECK(c[1].material.has_f0);
+    CHECK(c[1].material.f0 == 0.04);
+    CHECK(c[2].material.has_f0);
+    CHECK(c[2].material.f0 == 1.0);
+    CHECK_FALSE(c[3].material.has_f0);
+    CHECK(c[3].material.f0 == 1.0);
+    CHECK_FALSE(c[4].material.has_f0);
+    CHECK(c[4].material.f0 == 1.0);
+}
+
+TEST_CASE("malformed: f0 out of [0, 1] or not a number", "[io]") {
+    expect_error(
+        file_with(one_case("neg", kQuad, R"({"distribution":"ggx","alpha":0.25,"f0":-0.1})")),
+        "neg", "material.f0", "-0.1 is outside [0, 1]");
+    expect_error(
+        file_with(one_case("big", kQuad, R"({"distribution":"beckmann","alpha":0.2,"f0":1.5})")),
+        "big", "material.f0", "1.5 is outside [0, 1]");
+    expect_error(
+        file_with(one_case("str", kQuad, R"({"distribution":"blinn","exponent":20,"f0":"x"})")),
+        "str", "material.f0", "must be a number");
+    expect_error(
+        file_with(one_case("null", kQuad, R"({"distribution":"ggx","alpha":0.25,"f0":null})")),
+        "null", "material.f0", "must be a number");
+}
+
 TEST_CASE("every error in a file is reported, not just the first", "[io]") {
     const std::string text =
         file_with(one_case("good") + "," +

@@ -103,9 +103,12 @@ TEST_CASE("enumeration: every variant valid, unique, and round-trips", "[variant
     const std::size_t phong_point_polygon = sided * verts;
     // lorentz, pearson, ellipsoid
     const std::size_t phong_peak_polygon = 3 * sided * verts * fits * specular;
+    // blinn, beckmann, ggx: exact with nodes 2, 3, 16 x precision x radial 2, 16, and
+    // the point baseline; one shape each (sided=any, verts=8).
+    const std::size_t microfacet_polygon = 3 * (3 * precision * 2 + 1);
     INFO("enumerated " << all.size());
-    CHECK(all.size() ==
-          phong_exact_polygon + phong_arvo_polygon + phong_peak_polygon + phong_point_polygon);
+    CHECK(all.size() == phong_exact_polygon + phong_arvo_polygon + phong_peak_polygon +
+                            phong_point_polygon + microfacet_polygon);
 
     std::set<std::string> names;
     for (const auto& v : all) {
@@ -125,7 +128,7 @@ TEST_CASE("enumeration: every variant valid, unique, and round-trips", "[variant
     CHECK(canonical_name(all[1]) ==
           "dist=phong,method=exact,light=polygon,verts=3,nodes=8,precision=fp32");
     CHECK(canonical_name(all[2]) == "dist=phong,method=exact,light=polygon,verts=3,nodes=12");
-    CHECK(canonical_name(all.back()) == "dist=phong,method=point,light=polygon,sided=two");
+    CHECK(canonical_name(all.back()) == "dist=ggx,method=point,light=polygon");
     CHECK(enumerate_variants() == all);
 }
 
@@ -138,7 +141,19 @@ TEST_CASE("validity: implemented family, keys in range, unused keys at default",
     v.nodes = 10;
     CHECK_FALSE(is_valid(v));
     v = Variant{};
+    v.dist = Distribution::Ggx;  // the exact microfacet reference
+    CHECK(is_valid(v));
+    v.nodes = 8;  // not among the microfacet family's 2, 3, 16
+    CHECK_FALSE(is_valid(v));
+    v.nodes = 2;
+    v.sided = Sided::One;  // microfacet families compile sided=any only
+    CHECK_FALSE(is_valid(v));
+    v = Variant{};
+    v.radial = 2;  // a microfacet-only key on phong
+    CHECK_FALSE(is_valid(v));
+    v = Variant{};
     v.dist = Distribution::Ggx;
+    v.method = Method::Arvo;  // no such family
     CHECK_FALSE(is_valid(v));
     v = Variant{};
     v.method = Method::Point;
@@ -228,7 +243,7 @@ TEST_CASE("bad variant names are rejected naming the key", "[variant]") {
     CHECK_THAT(error_of("dist=phong,method=pearson,light=polygon,fit=best"),
                Contains("key 'fit': unknown value 'best' (expected tuned, paper)"));
     CHECK_THAT(error_of("dist=phong,method=exact,light=polygon,nodes=10"),
-               Contains("key 'nodes': value '10' is not one of 8, 12, 16, 24"));
+               Contains("key 'nodes': value '10' is not one of 2, 3, 8, 12, 16, 24"));
     CHECK_THAT(error_of("method=exact,light=polygon"), Contains("key 'dist' is required"));
     CHECK_THAT(error_of("dist=phong,light=polygon"), Contains("key 'method' is required"));
     CHECK_THAT(error_of("dist=phong,method=exact"), Contains("key 'light' is required"));
@@ -241,8 +256,12 @@ TEST_CASE("bad variant names are rejected naming the key", "[variant]") {
                Contains("key 'nodes' applies to method=exact only"));
     CHECK_THAT(error_of("dist=phong,method=exact,light=disk,verts=4"),
                Contains("key 'verts' applies to light=polygon only"));
-    CHECK_THAT(error_of("dist=ggx,method=exact,light=polygon"),
-               Contains("no variant for dist=ggx,method=exact,light=polygon yet"));
+    CHECK_THAT(error_of("dist=ggx,method=arvo,light=polygon"),
+               Contains("no variant for dist=ggx,method=arvo,light=polygon yet"));
+    CHECK_THAT(error_of("dist=phong,method=exact,light=polygon,nodes=2"),
+               Contains("key 'nodes': value '2' is not offered for dist=phong,method=exact"));
+    CHECK_THAT(error_of("dist=phong,method=exact,light=polygon,radial=2"),
+               Contains("key 'radial' applies to"));
     CHECK_THAT(error_of("dist=phong,method=exact,light=sphere"),
                Contains("no variant for dist=phong,method=exact,light=sphere yet"));
 }
@@ -320,4 +339,211 @@ TEST_CASE("pattern matching compares effective values", "[variant]") {
     CHECK(all == enumerate_variants().size());
     CHECK(exact == 3 * 4 * 2);  // verts 3, 4, 8; nodes; precision
     CHECK(point == 3);
+}
+
+// The tables the functions above loop over (variant_keys, variant_families): each
+// test below runs over every row, so a new key, value or family is checked by them
+// without a test edit.
+namespace {
+
+std::string family_base(const VariantFamily& f) {
+    return std::string("dist=") + to_string(f.dist) + ",method=" + to_string(f.method) +
+           ",light=" + to_string(f.light);
+}
+
+const FamilyKey* family_key(const VariantFamily& f, const std::string& key) {
+    for (const auto& fk : f.keys)
+        if (fk.key == key) return &fk;
+    return nullptr;
+}
+
+}  // namespace
+
+TEST_CASE("key table: names in canonical order, required keys, defaults, docs", "[variant]") {
+    std::vector<std::string> names;
+    for (const auto& k : variant_keys()) {
+        INFO("key " << k.name);
+        names.push_back(k.name);
+        CHECK_FALSE(k.doc.empty());
+        REQUIRE_FALSE(k.values.empty());
+        std::set<std::string> unique(k.values.begin(), k.values.end());
+        CHECK(unique.size() == k.values.size());
+        if (k.required) {
+            CHECK(k.default_value.empty());
+            CHECK(k.applies_to.empty());
+        } else {
+            CHECK(std::count(k.values.begin(), k.values.end(), k.default_value) == 1);
+        }
+    }
+    // Today's keys lead, in today's canonical order; a new key goes after them.
+    const std::vector<std::string> today = {"dist",  "method",    "light", "sided",   "verts",
+                                            "nodes", "precision", "fit",   "specular"};
+    REQUIRE(names.size() >= today.size());
+    CHECK(std::vector<std::string>(names.begin(), names.begin() + today.size()) == today);
+    // Where each key applies, as its error message names it: derived from the families.
+    auto scope = [](const std::string& name) {
+        for (const auto& k : variant_keys())
+            if (k.name == name) return k.applies_to;
+        return std::string("?");
+    };
+    CHECK(scope("sided").empty());
+    CHECK(scope("verts") == "light=polygon");
+    CHECK(scope("nodes") == "method=exact");
+    CHECK(scope("precision") == "method=exact");
+    CHECK(scope("fit") == "method=lorentz, pearson, ellipsoid");
+    CHECK(scope("specular") == "method=lorentz, pearson, ellipsoid");
+    // The unknown-key message lists the table.
+    std::string listed;
+    for (const auto& name : names) listed += (listed.empty() ? "" : ", ") + name;
+    CHECK(error_of("dist=phong,method=exact,light=polygon,color=red") ==
+          "variant 'dist=phong,method=exact,light=polygon,color=red': unknown key 'color' (keys: " +
+              listed + ")");
+}
+
+TEST_CASE("family table: every family's keys and values are the key table's", "[variant]") {
+    std::set<std::string> families;
+    for (const auto& f : variant_families()) {
+        const std::string base = family_base(f);
+        INFO("family " << base);
+        CHECK(families.insert(base).second);
+        // Its bare name is valid: every key it uses offers the key's default.
+        const Variant v = parse_ok(base);
+        CHECK(is_valid(v));
+        CHECK(find_family(v) == &f);
+        CHECK_FALSE(f.templates.empty());
+        for (const auto& fk : f.keys) {
+            INFO("key " << fk.key);
+            auto k = std::find_if(variant_keys().begin(), variant_keys().end(),
+                                  [&](const KeyInfo& i) { return i.name == fk.key; });
+            REQUIRE(k != variant_keys().end());
+            CHECK_FALSE(k->required);
+            REQUIRE_FALSE(fk.values.empty());
+            // A subset of the key's values, in the key's order.
+            std::size_t at = 0;
+            for (const auto& x : fk.values) {
+                while (at < k->values.size() && k->values[at] != x) ++at;
+                CHECK(at < k->values.size());
+            }
+            CHECK(std::count(fk.values.begin(), fk.values.end(), k->default_value) == 1);
+        }
+    }
+    // A (dist, method, light) with no row has no variant.
+    Variant none;
+    none.light = LightType::Sphere;
+    CHECK(find_family(none) == nullptr);
+}
+
+TEST_CASE("enumeration is the product of each family's key values, in table order", "[variant]") {
+    const auto all = enumerate_variants();
+    std::size_t expected = 0;
+    for (const auto& f : variant_families()) {
+        std::size_t n = 1;
+        for (const auto& fk : f.keys) n *= fk.values.size();
+        std::size_t got = 0;
+        for (const auto& v : all) got += find_family(v) == &f;
+        INFO("family " << family_base(f));
+        CHECK(got == n);
+        expected += n;
+    }
+    CHECK(all.size() == expected);
+    // Families in table order, each contiguous.
+    std::vector<const VariantFamily*> order;
+    for (const auto& v : all)
+        if (order.empty() || order.back() != find_family(v)) order.push_back(find_family(v));
+    REQUIRE(order.size() == variant_families().size());
+    for (std::size_t i = 0; i < order.size(); ++i) CHECK(order[i] == &variant_families()[i]);
+}
+
+TEST_CASE("every value of every key parses, names, matches and is enumerated", "[variant]") {
+    const auto all = enumerate_variants();
+    std::set<std::string> enumerated;
+    for (const auto& v : all) enumerated.insert(canonical_name(v));
+    for (const auto& k : variant_keys()) {
+        if (k.required) continue;
+        for (const auto& f : variant_families()) {
+            const FamilyKey* fk = family_key(f, k.name);
+            const std::string base = family_base(f);
+            const Variant bare = parse_ok(base);
+            if (!fk) {
+                // Not used: named anywhere, rejected saying where it applies.
+                INFO("family " << base << ", key " << k.name);
+                CHECK(error_of(base + "," + k.name + "=" + k.default_value) ==
+                      "variant '" + base + "," + k.name + "=" + k.default_value + "': key '" +
+                          k.name + "' applies to " + k.applies_to + " only");
+                continue;
+            }
+            for (const auto& value : k.values) {
+                const std::string name = base + "," + k.name + "=" + value;
+                INFO(name);
+                const bool offered =
+                    std::find(fk->values.begin(), fk->values.end(), value) != fk->values.end();
+                if (!offered) {
+                    CHECK_THAT(error_of(name), Catch::Matchers::Contains("is not offered"));
+                    continue;
+                }
+                const Variant v = parse_ok(name);
+                CHECK(is_valid(v));
+                CHECK(variant_matches(v, k.name + "=" + value));
+                CHECK(parse_ok(canonical_name(v)) == v);
+                CHECK(enumerated.count(canonical_name(v)) == 1);
+                // The default is dropped from the name; any other value is named, and
+                // makes a different variant (operator== sees the field).
+                const bool is_default = value == k.default_value;
+                CHECK((canonical_name(v) == base) == is_default);
+                CHECK((v == bare) == is_default);
+                if (!is_default) {
+                    CHECK(canonical_name(v) == name);
+                    CHECK_FALSE(variant_matches(bare, k.name + "=" + value));
+                }
+            }
+        }
+    }
+}
+
+TEST_CASE("a key a family does not use stays at its default", "[variant]") {
+    for (const auto& v : enumerate_variants()) {
+        const VariantFamily* f = find_family(v);
+        REQUIRE(f);
+        for (const auto& k : variant_keys()) {
+            if (k.required || family_key(*f, k.name)) continue;
+            INFO(canonical_name(v) << ", key " << k.name);
+            // No value to match, except precision's effective value, fp32.
+            if (k.name == "precision")
+                CHECK(variant_matches(v, "precision=fp32"));
+            else
+                CHECK_FALSE(variant_matches(v, k.name + "=" + k.default_value));
+            CHECK(canonical_name(v).find("," + k.name + "=") == std::string::npos);
+        }
+    }
+}
+
+TEST_CASE("where a key applies, as its message says, is the families that name it", "[variant]") {
+    for (const auto& k : variant_keys()) {
+        if (k.required) continue;
+        // "method=lorentz, pearson, ellipsoid", several joined by " and "; empty: all.
+        std::vector<std::pair<std::string, std::vector<std::string>>> parts;
+        for (std::size_t at = 0; at < k.applies_to.size();) {
+            std::size_t end = k.applies_to.find(" and ", at);
+            if (end == std::string::npos) end = k.applies_to.size();
+            const std::string part = k.applies_to.substr(at, end - at);
+            const std::size_t eq = part.find('=');
+            REQUIRE(eq != std::string::npos);
+            std::vector<std::string> values;
+            std::istringstream in(part.substr(eq + 1));
+            for (std::string x; std::getline(in, x, ',');) values.push_back(x.substr(x[0] == ' '));
+            parts.emplace_back(part.substr(0, eq), values);
+            at = end + 5;
+        }
+        for (const auto& f : variant_families()) {
+            bool inside = true;
+            for (const auto& [axis, values] : parts) {
+                const std::string value = axis == "dist"     ? to_string(f.dist)
+                                          : axis == "method" ? to_string(f.method)
+                                                             : to_string(f.light);
+                inside = inside && std::count(values.begin(), values.end(), value) == 1;
+            }
+            INFO("key " << k.name << " (" << k.applies_to << "), family " << family_base(f));
+            CHECK(inside == (family_key(f, k.name) != nullptr));
+        }
+    }
 }

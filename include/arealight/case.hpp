@@ -26,6 +26,11 @@ struct Material {
     Distribution distribution = Distribution::Phong;
     double exponent = 0.0;  // phong, blinn
     double alpha = 0.0;     // beckmann, ggx
+    // Schlick's f0 (CONTRACT 2, microfacet `specular` only). has_f0 says whether the case
+    // carries it; without it f0 stays 1, where F = f0 + (1 - f0)(1 - h.v)^5 is exactly 1, so
+    // code that always applies F (the shaders) agrees with code that skips it (the oracle).
+    double f0 = 1.0;
+    bool has_f0 = false;
 };
 
 struct Case {

@@ -32,22 +32,24 @@ enum class Sided { Any, One, Two };
 // offers fp32; every other method is fp32 only for now.
 enum class Precision { Fp32, Fp64 };
 
+// One shader variant. Each key of the key table (variant_keys()) is a typed field
+// here, initialised to the key's default; which keys a variant uses, and which of
+// their values, is its family's row (variant_families()).
 struct Variant {
     Distribution dist = Distribution::Phong;
     Method method = Method::Exact;
     LightType light = LightType::Polygon;
     Sided sided = Sided::Any;
     int verts = 8;   // polygon: largest polygon compiled in: 3, 4 or 8
-    int nodes = 16;  // method=exact: Gauss-Legendre nodes per edge, 8/12/16/24
+    int nodes = 16;  // method=exact: Gauss-Legendre nodes per edge (per arc piece, microfacets)
     Precision precision = Precision::Fp64;          // method=exact: fp64 or fp32
     Fit fit = Fit::Tuned;                           // peak methods
     SpecularForm specular = SpecularForm::TwoAxis;  // peak methods
+    int radial = 16;  // exact microfacets: radial Gauss-Legendre nodes of the specular rule
 
-    bool operator==(const Variant& o) const {
-        return dist == o.dist && method == o.method && light == o.light && sided == o.sided &&
-               verts == o.verts && nodes == o.nodes && precision == o.precision && fit == o.fit &&
-               specular == o.specular;
-    }
+    // Equal when every key of the key table has the same value (a field that no
+    // key row reads would not count: each field is a row).
+    bool operator==(const Variant& o) const;
     bool operator!=(const Variant& o) const { return !(*this == o); }
 };
 
@@ -65,7 +67,8 @@ Precision effective_precision(const Variant& v);
 
 // Parses "key=value,..."; dist, method and light are required, every other key
 // has a default. Errors name the key (unknown, bad value, duplicate, missing,
-// not applicable) and the combination when it has no implementation.
+// not applicable, a value its family does not offer) and the combination when it
+// has no implementation.
 std::optional<Variant> parse_variant(const std::string& name, const DiagnosticConsumer& diag);
 
 // An implemented family, every key in range, and every key that does not apply
@@ -89,5 +92,47 @@ std::vector<std::pair<std::string, std::string>> variant_defines(const Variant& 
 // precision, whose effective value (effective_precision) every variant has; and
 // an invalid pattern matches nothing.
 bool variant_matches(const Variant& v, const std::string& pattern);
+
+// Introspection of the two tables the functions above loop over.
+//
+// A key: every value it accepts (in enumeration and message order), its default
+// (empty for the required keys dist, method and light), one line of doc, and the
+// families it applies to as the error messages name them ("method=exact"; empty
+// when every family uses it).
+struct KeyInfo {
+    std::string name;
+    std::vector<std::string> values;
+    std::string default_value;
+    bool required = false;
+    std::string doc;
+    std::string applies_to;
+};
+
+// dist, method, light, then the further keys, in canonical-name order.
+const std::vector<KeyInfo>& variant_keys();
+
+// A (dist, method, light) with an implementation: the further keys it uses, each
+// with the values enumerated for it (exactly the values valid for it, in the key's
+// order), and the templates it stitches, in order, between templates/common.glsl
+// and (GLSL only) templates/entry.glsl, as names inside templates/.
+struct FamilyKey {
+    // In the table, {} stands for every value of the key; variant_families() lists them.
+    FamilyKey(std::string key, std::vector<std::string> values = {})
+        : key(std::move(key)), values(std::move(values)) {}
+    std::string key;
+    std::vector<std::string> values;
+};
+struct VariantFamily {
+    Distribution dist;
+    Method method;
+    LightType light;
+    std::vector<FamilyKey> keys;
+    std::vector<std::string> templates;
+};
+
+const std::vector<VariantFamily>& variant_families();
+
+// The family row of the variant's (dist, method, light), or nullptr when none.
+const VariantFamily* find_family(const Variant& v);
 
 }  // namespace arealight

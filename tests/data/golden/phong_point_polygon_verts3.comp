@@ -30,7 +30,8 @@ const real AL_HALF_PI = 1.57079632679489661923f;
 // to full relative precision (in a world frame the edges' distances to r would
 // carry 6e-8 absolute error). n, v unit; r = 2 (n.v) n - v formed on the host for
 // the same reason. verts = polygon vertices relative to the centre. params =
-// (exponent or alpha, two_sided, vertex count, 0). 208 bytes, std430.
+// (exponent or alpha, two_sided, vertex count, Schlick f0: 1 when the case has none).
+// 208 bytes, std430.
 struct AlCase {
     vec4 n;
     vec4 v;
@@ -237,7 +238,7 @@ void al_tangent_frame(rvec3 z, AL_INOUT(rvec3) e1, AL_INOUT(rvec3) e2) {
 // precision: a value beyond the fp32 range is thus caught here too.
 float al_clean(float x) { return (x >= 0.0f && x <= 3.0e38f) ? x : 0.0f; }
 vec4 al_clean(vec4 x) { return vec4(al_clean(x.x), al_clean(x.y), al_clean(x.z), al_clean(x.w)); }
-#line 241 "arealight-generated"
+#line 242 "arealight-generated"
 #line 1 "templates/dist_phong.glsl"
 // Energy-conserving Phong, CONTRACT.md 2: f = (N+2)/(2 pi) (r.w)_+^N.
 
@@ -254,7 +255,7 @@ real al_phong_power(rvec3 r, rvec3 w, real N) {
 real al_phong_brdf(rvec3 r, rvec3 w, real N) {
     return (N + 2.0f) / AL_TWO_PI * al_phong_power(r, w, N);
 }
-#line 258 "arealight-generated"
+#line 259 "arealight-generated"
 #line 1 "templates/polygon.glsl"
 // Polygon lights (CONTRACT.md 1) as spherical polygons: orientation, sidedness,
 // exact clipping to the hemispheres of n and of the lobe axis, and the exact diffuse
@@ -295,8 +296,9 @@ rvec3 al_crossing(rvec3 a, rvec3 b, real da, real db) {
 
 #ifndef AL_METHOD_POINT
 // Streams the arcs of D = light ∩ {n.w >= 0} ∩ {axis.w >= 0} into the method's
-// accumulator and returns its moments (al_moments_end); `diffuse` receives the
-// irradiance / pi of light ∩ {n.w >= 0} (Lambert: sum arc_i (n.m_i) / (2 pi), exact).
+// accumulator M (al_moments_arc) and returns the irradiance / pi of light ∩ {n.w >= 0}
+// (Lambert: sum arc_i (n.m_i) / (2 pi), exact). Without clip_axis, D = light ∩
+// {n.w >= 0} (microfacet lobes live in half-vector space: no second clip).
 // The light is convex and lies in an open hemisphere, so each clip circle meets
 // the clipped boundary in at most one arc, shorter than pi. Iterations 0..count-1
 // take the light's edges, clipped to both hemispheres; iteration count the arc
@@ -304,11 +306,10 @@ rvec3 al_crossing(rvec3 a, rvec3 b, real da, real db) {
 // re-enters (clipped by the axis); iteration count+1 the arc along the axis's
 // circle between D's exit and entry points. All in one rolled loop, so the
 // method's per-arc code appears once.
-rvec2 al_polygon_moments(AlCase c, real side, rvec3 n, rvec3 axis, real N,
-                         AL_INOUT(real) diffuse) {
+real al_polygon_stream(AlCase c, real side, rvec3 n, rvec3 axis, bool clip_axis, real N,
+                       AL_INOUT(AlMoments) M) {
     int count = int(c.params.z);
     rvec3 center = rvec3(c.center);
-    AlMoments M = al_moments_begin(axis);
     real lit_sum = 0.0f;
     rvec3 xn = rvec3(0.0f), en = rvec3(0.0f);  // leaves / re-enters n's hemisphere
     rvec3 yo = rvec3(0.0f), yi = rvec3(0.0f);  // leaves / re-enters the axis's, on D
@@ -329,7 +330,7 @@ rvec2 al_polygon_moments(AlCase c, real side, rvec3 n, rvec3 axis, real N,
             m = normalize(cross(center + dp, dq - dp));
             real na = dot(n, a), nb = dot(n, b), ra = dot(axis, a), rb = dot(axis, b);
             bool ia = na >= 0.0f, ib = nb >= 0.0f;
-            bool ja = ra >= 0.0f, jb = rb >= 0.0f;
+            bool ja = !clip_axis || ra >= 0.0f, jb = !clip_axis || rb >= 0.0f;
             rvec3 pn = ia != ib ? al_crossing(a, b, na, nb) : a;
             rvec3 pr = ja != jb ? al_crossing(a, b, ra, rb) : a;
             // Lit part (diffuse): the edge clipped to n's hemisphere.
@@ -368,7 +369,7 @@ rvec2 al_polygon_moments(AlCase c, real side, rvec3 n, rvec3 axis, real N,
             if (has_xn && has_en) {
                 lit_sum += al_arc(xn, en, n);
                 real rx = dot(axis, xn), re = dot(axis, en);
-                bool jx = rx >= 0.0f, je = re >= 0.0f;
+                bool jx = !clip_axis || rx >= 0.0f, je = !clip_axis || re >= 0.0f;
                 rvec3 q = jx != je ? al_crossing(xn, en, rx, re) : xn;
                 if (jx && !je) {
                     yo = q;
@@ -391,11 +392,20 @@ rvec2 al_polygon_moments(AlCase c, real side, rvec3 n, rvec3 axis, real N,
         }
         if (d_arc) al_moments_arc(M, a, b, m, axis, n, N);
     }
-    diffuse = lit_sum / AL_TWO_PI;
+    return lit_sum / AL_TWO_PI;
+}
+
+#ifdef AL_DIST_PHONG
+// The Phong moments about `axis` over D (al_moments_end), and D's diffuse.
+rvec2 al_polygon_moments(AlCase c, real side, rvec3 n, rvec3 axis, real N,
+                         AL_INOUT(real) diffuse) {
+    AlMoments M = al_moments_begin(axis);
+    diffuse = al_polygon_stream(c, side, n, axis, true, N, M);
     return al_moments_end(M, axis, n, N);
 }
 #endif
-#line 399 "arealight-generated"
+#endif
+#line 409 "arealight-generated"
 #line 1 "templates/light_polygon.glsl"
 // Shading of polygon lights (CONTRACT.md 2) by each method: the point-light
 // baseline, or clipping (polygon.glsl) and the method's boundary moments.
@@ -403,6 +413,7 @@ rvec2 al_polygon_moments(AlCase c, real side, rvec3 n, rvec3 axis, real N,
 #ifdef AL_METHOD_POINT
 // Baseline: the polygon's centre as a point light of the same power, solid angle
 // ~ area cos(theta_l) / d^2. Error grows with the light's angular size; O(1), cheapest.
+// Returns (diffuse, specular, 0, 0) (CONTRACT.md 2; no ndf or moment).
 vec4 al_shade(AlCase c) {
     rvec3 n = rvec3(c.n);
     real side = al_polygon_side(c);
@@ -419,9 +430,52 @@ vec4 al_shade(AlCase c) {
     rvec3 w = centre * inversesqrt(d2);
     real solid_angle = abs(dot(area2, w)) * 0.5f / d2;
     real nw = max(dot(n, w), 0.0f);
+#ifdef AL_DIST_PHONG
     real N = real(c.params.x);
     real spec = al_phong_brdf(rvec3(c.r), w, N) * nw * solid_angle;
+#else
+    real spec = al_microfacet_brdf_cos(n, rvec3(c.v), w, real(c.params.x), real(c.params.w)) *
+                solid_angle;
+#endif
     return vec4(nw / AL_PI * solid_angle, spec, 0.0f, 0.0f);
+}
+#endif
+
+#if !defined(AL_DIST_PHONG) && !defined(AL_METHOD_POINT)
+// Whether the mirror direction r lies in the light's solid angle, or within
+// 1e-5 rad of its boundary: the inward normals of the unclipped edges, oriented
+// as polygon.glsl walks them.
+bool al_polygon_holds(AlCase c, real side, rvec3 r) {
+    int count = int(c.params.z);
+    rvec3 center = rvec3(c.center);
+    bool inside = true;
+    for (int i = 0; i < AL_MAX_VERTS; ++i) {
+        if (i >= count) break;
+        int j = i + 1 < count ? i + 1 : 0;
+        int p = side > 0.0f ? j : i, q = side > 0.0f ? i : j;
+        rvec3 dp = rvec3(c.verts[p]), dq = rvec3(c.verts[q]);
+        rvec3 m = normalize(cross(center + dp, dq - dp));
+        inside = inside && dot(r, m) >= -1e-5f;
+    }
+    return inside;
+}
+
+// Diffuse, specular and ndf (CONTRACT.md 2) for a microfacet distribution: the
+// lit region (light clipped to the horizon of n, never to a lobe's hemisphere)
+// streamed into the half-vector accumulator.
+vec4 al_shade(AlCase c) {
+    rvec3 n = normalize(rvec3(c.n));
+    rvec3 v = normalize(rvec3(c.v));
+    real side = al_polygon_side(c);
+    if (side == 0.0f) return vec4(0.0f);
+    real nv = dot(n, v);
+    real param = real(c.params.x);
+    rvec3 r = normalize(rvec3(c.r));
+    bool direct = nv > 0.0f && al_polygon_holds(c, side, r);
+    AlMoments M = al_mf_begin(n, v, r, param, real(c.params.w), direct);
+    real diffuse = al_polygon_stream(c, side, n, n, false, param, M);
+    rvec2 sn = al_mf_end(M);
+    return vec4(diffuse, sn.x, sn.y, 0.0f);
 }
 #endif
 
@@ -456,7 +510,7 @@ real al_specular_sg(AlCase c, real side, rvec3 r, rvec3 n, real N) {
 }
 #endif
 
-#ifndef AL_METHOD_POINT
+#if defined(AL_DIST_PHONG) && !defined(AL_METHOD_POINT)
 // Diffuse, specular and moment (CONTRACT.md 2) for Phong: clip by the horizon of n
 // (diffuse, exact) and by r's hemisphere ((r.w)_+ vanishes beyond), streaming the
 // arcs into the method's boundary moments (polygon.glsl).
@@ -475,7 +529,7 @@ vec4 al_shade(AlCase c) {
     return vec4(diffuse, specular, sm.y, 0.0f);
 }
 #endif
-#line 479 "arealight-generated"
+#line 533 "arealight-generated"
 #line 1 "templates/entry.glsl"
 // Compute entry point (GLSL only): one invocation per case, the VulkanRunner
 // contract (runtime/vulkan_runner.hpp): binding 0 cases, binding 1 results,
@@ -495,4 +549,4 @@ void main() {
     if (i >= al_push.count) return;
     al_results[i] = al_clean(al_shade(al_cases[i]));
 }
-#line 499 "arealight-generated"
+#line 553 "arealight-generated"

@@ -1,0 +1,216 @@
+// Microfacet polygon variants (blinn, beckmann, ggx) against the oracle, one test
+// body over both backends: the exact half-vector boundary rule at its reference
+// node counts and at its O(1) counts, the point baseline, backend agreement, and
+// finite non-negative values at the parameter and view extremes.
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <map>
+#include <random>
+
+#include "arealight/evaluator.hpp"
+#include "arealight/reference.hpp"
+#include "eval_support.hpp"
+#include "test_support.hpp"
+
+using namespace arealight;
+using namespace arealight::test;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+const Distribution kMicrofacets[] = {Distribution::Blinn, Distribution::Beckmann,
+                                     Distribution::Ggx};
+
+// Issue 10's bars for exact (score metric, floor 1e-3): ndf and diffuse p95 1e-5,
+// specular p95 1e-4; and a max bar for both.
+constexpr double kExactNdfP95Tol = 1e-5;
+constexpr double kExactSpecularP95Tol = 1e-4;
+constexpr double kExactMaxTol = 1e-3;
+// fp64 arithmetic with the templates' own transcendentals: the backends agree to
+// rounding (measured: bit-identical on these cases). fp32: the drivers' sin/cos/exp
+// differ, and the pieces' branch points (near/far arc, core reach) amplify it at
+// two or three nodes (measured worst 4.2e-4, blinn nodes=3).
+constexpr double kBackendTol = 1e-6;
+constexpr double kBackendFp32Tol = 1e-3;
+
+std::string name_of(Distribution d, const std::string& rest) {
+    return std::string("dist=") + to_string(d) + ",light=polygon," + rest;
+}
+
+// Random convex polygons around the mirror direction of views from normal to
+// grazing (n.v down to 0.02), some crossing the horizon, some large; parameters
+// log-uniform over the contract's range (alpha in [1e-3, 1], N in [1, 1e5]); a
+// third two-sided, a third with Schlick f0. A random rigid motion on each.
+CaseSet random_microfacet_polygons(std::uint64_t seed, int count, Distribution d) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> U(0, 1);
+    CaseSet set;
+    for (int i = 0; i < count; ++i) {
+        glm::dvec3 n(0, 0, 1);
+        const double nv = 0.02 + 0.98 * U(rng), ph = 2 * kPi * U(rng);
+        const double sv = std::sqrt(1 - nv * nv);
+        glm::dvec3 v(sv * std::cos(ph), sv * std::sin(ph), nv);
+        glm::dvec3 r = 2 * nv * n - v;
+        glm::dvec3 dir =
+            glm::normalize(r + 0.8 * glm::dvec3(U(rng) - 0.5, U(rng) - 0.5, U(rng) - 0.4));
+        glm::dvec3 t1 = glm::normalize(glm::cross(dir, glm::dvec3(0.3, 0.5, 0.8)));
+        glm::dvec3 t2 = glm::cross(dir, t1);
+        const int k = 3 + static_cast<int>(U(rng) * 6);
+        const double dist = 1 + 4 * U(rng), rad = (0.05 + 1.5 * U(rng)) * dist * 0.5;
+        std::vector<glm::dvec3> verts;
+        for (int j = 0; j < k; ++j) {
+            const double a = -2 * kPi * (j + 0.7 * U(rng)) / k;  // clockwise about dir
+            verts.push_back(dist * dir + rad * (std::cos(a) * t1 + std::sin(a) * t2));
+        }
+        const double p = d == Distribution::Blinn ? std::exp(std::log(1e5) * U(rng))
+                                                  : std::exp(std::log(1e-3) * U(rng));
+        Case c = polygon_case("mf-" + std::to_string(i), verts, n, v, d, p, i % 3 == 0);
+        if (i % 3 == 0 && U(rng) < 0.5)
+            std::reverse(c.light.vertices.begin(), c.light.vertices.end());
+        if (i % 3 == 1) {
+            c.material.f0 = U(rng);
+            c.material.has_f0 = true;
+        }
+        set.cases.push_back(transformed(
+            c, random_rotation(rng), glm::dvec3(U(rng) - 0.5, U(rng) - 0.5, U(rng) - 0.5) * 10.0));
+    }
+    return set;
+}
+
+double percentile95(std::vector<double> e) {
+    std::sort(e.begin(), e.end());
+    return e.empty() ? 0.0 : e[static_cast<std::size_t>(0.95 * (e.size() - 1))];
+}
+
+}  // namespace
+
+TEST_CASE("exact microfacet shading matches the oracle on both backends", "[shading][vulkan][microfacet]") {
+    for (Distribution d : kMicrofacets) {
+        const CaseSet cases = random_microfacet_polygons(1000 + static_cast<int>(d), 50, d);
+        std::map<std::string, CaseResult> ref;
+        for (const auto& c : cases.cases) ref[c.id] = reference_case(c, {});
+        const std::string name = name_of(d, "method=exact");
+        std::map<Backend, ResultSet> out;
+        for (Backend b : {Backend::Cpu, Backend::Vulkan}) {
+            out[b] = run(b, name, cases);
+            REQUIRE(out[b].results.size() == cases.cases.size());
+            std::vector<double> e_ndf, e_spec, e_diff;
+            double worst = 0;
+            std::string worst_at;
+            for (const auto& r : out[b].results) {
+                const CaseResult& o = ref.at(r.id);
+                e_ndf.push_back(rel_err(*r.ndf, *o.ndf));
+                e_spec.push_back(rel_err(*r.specular, *o.specular));
+                e_diff.push_back(rel_err(*r.diffuse, *o.diffuse));
+                for (double e : {e_ndf.back(), e_spec.back(), e_diff.back()}) {
+                    if (e > worst) worst = e, worst_at = r.id;
+                }
+            }
+            INFO(name << " on " << to_string(b) << ": p95 ndf " << percentile95(e_ndf)
+                      << ", specular " << percentile95(e_spec) << ", diffuse "
+                      << percentile95(e_diff) << "; worst " << worst << " at " << worst_at);
+            CHECK(percentile95(e_ndf) <= kExactNdfP95Tol);
+            CHECK(percentile95(e_diff) <= kExactNdfP95Tol);
+            CHECK(percentile95(e_spec) <= kExactSpecularP95Tol);
+            CHECK(worst <= kExactMaxTol);
+        }
+        double worst = 0;
+        for (std::size_t i = 0; i < cases.cases.size(); ++i) {
+            const auto &c = out[Backend::Cpu].results[i], &g = out[Backend::Vulkan].results[i];
+            worst = std::max({worst, rel_err(*g.specular, *c.specular), rel_err(*g.ndf, *c.ndf),
+                              rel_err(*g.diffuse, *c.diffuse)});
+        }
+        INFO(name << ": worst CPU/GPU relative difference " << worst);
+        CHECK(worst <= kBackendTol);
+    }
+}
+
+TEST_CASE("exact microfacet at O(1) node counts: bounded relL2, backends agree",
+          "[shading][vulkan][microfacet]") {
+    // Bars about 1.5x the worse backend's measured relL2 on these cases (in brackets).
+    struct Bar {
+        Distribution d;
+        const char* keys;
+        double ndf, specular;
+    };
+    const Bar bars[] = {
+        {Distribution::Ggx, "method=exact,nodes=2,radial=2,precision=fp32", 1e-2, 1.2e-2},         // [6.5e-3, 8.0e-3]
+        {Distribution::Beckmann, "method=exact,nodes=2,radial=2,precision=fp32", 2.2e-2, 1.7e-2},  // [1.47e-2, 1.14e-2]
+        {Distribution::Blinn, "method=exact,nodes=2,radial=2,precision=fp32", 1.5e-2, 1.1e-2},     // [1.02e-2, 7.5e-3]
+        {Distribution::Blinn, "method=exact,nodes=3,radial=2,precision=fp32", 4.2e-3, 3.7e-3},     // [2.7e-3, 2.4e-3]
+    };
+    for (const Bar& bar : bars) {
+        const CaseSet cases = random_microfacet_polygons(2000 + static_cast<int>(bar.d), 50, bar.d);
+        std::map<std::string, CaseResult> ref;
+        for (const auto& c : cases.cases) ref[c.id] = reference_case(c, {});
+        const std::string name = name_of(bar.d, bar.keys);
+        std::map<Backend, ResultSet> out;
+        for (Backend b : {Backend::Cpu, Backend::Vulkan}) {
+            out[b] = run(b, name, cases);
+            const double ndf = rel_l2(out[b], ref, &CaseResult::ndf);
+            const double spec = rel_l2(out[b], ref, &CaseResult::specular);
+            INFO(name << " on " << to_string(b) << ": relL2 ndf " << ndf << ", specular " << spec);
+            CHECK(ndf <= bar.ndf);
+            CHECK(spec <= bar.specular);
+        }
+        double worst = 0;
+        for (std::size_t i = 0; i < cases.cases.size(); ++i) {
+            const auto &c = out[Backend::Cpu].results[i], &g = out[Backend::Vulkan].results[i];
+            worst = std::max({worst, rel_err(*g.specular, *c.specular), rel_err(*g.ndf, *c.ndf)});
+        }
+        INFO(name << ": worst CPU/GPU relative difference " << worst);
+        CHECK(worst <= kBackendFp32Tol);
+    }
+}
+
+TEST_CASE("microfacet variants: finite and non-negative at the extremes",
+          "[shading][vulkan][microfacet]") {
+    // alpha 1e-3 and 1 (N 1 and 1e5), views from normal to grazing (n.v 1e-6) and
+    // from below (n.v < 0: specular 0), lights tiny, along r, crossing the horizon
+    // and nearly filling the hemisphere.
+    CaseSet set;
+    int id = 0;
+    for (Distribution d : kMicrofacets) {
+        const bool blinn = d == Distribution::Blinn;
+        for (double p : blinn ? std::vector<double>{1.0, 1e5} : std::vector<double>{1e-3, 1.0}) {
+            for (double nv : {1.0, 0.3, 1e-3, 1e-6, -0.2}) {
+                glm::dvec3 n(0, 0, 1);
+                const double sv = std::sqrt(std::max(0.0, 1 - nv * nv));
+                glm::dvec3 v(sv, 0, nv);
+                glm::dvec3 r = glm::normalize(2 * nv * n - v + glm::dvec3(0, 0, 1e-9));
+                glm::dvec3 t1 = glm::normalize(glm::cross(r, glm::dvec3(0, 1, 0)));
+                glm::dvec3 t2 = glm::cross(r, t1);
+                for (double rad : {1e-4, 0.5, 30.0}) {
+                    std::vector<glm::dvec3> quad;
+                    for (int j = 0; j < 4; ++j) {
+                        const double a = -kPi / 2 * j;
+                        quad.push_back(2.0 * r + glm::dvec3(0, 0, 0.3) +
+                                       rad * (std::cos(a) * t1 + std::sin(a) * t2));
+                    }
+                    set.cases.push_back(
+                        polygon_case("x" + std::to_string(id++), quad, n, v, d, p, true));
+                }
+            }
+        }
+    }
+    for (Distribution d : kMicrofacets) {
+        for (const char* keys : {"method=exact", "method=exact,nodes=2,radial=2,precision=fp32",
+                                 "method=point"}) {
+            const std::string name = name_of(d, keys);
+            for (Backend b : {Backend::Cpu, Backend::Vulkan}) {
+                for (const auto& res : run(b, name, set).results) {
+                    INFO(name << " " << to_string(b) << " " << res.id << ": diffuse "
+                              << *res.diffuse << ", specular " << *res.specular);
+                    CHECK(std::isfinite(*res.diffuse));
+                    CHECK(std::isfinite(*res.specular));
+                    CHECK(*res.specular >= 0.0);
+                    if (res.ndf) {
+                        CHECK(std::isfinite(*res.ndf));
+                        CHECK(*res.ndf >= 0.0);
+                    }
+                }
+            }
+        }
+    }
+}
