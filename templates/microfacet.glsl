@@ -1,7 +1,7 @@
 // Distribution-independent microfacet helpers (CONTRACT.md 2): Smith's G2, Schlick's
 // Fresnel, erfcx and the Beckmann Lambda. Stitched after the dist file; blinn's and
-// beckmann's files declare al_erfcx and al_beckmann_lambda ahead and use them, so a
-// variant with either distribution must stitch this file too.
+// beckmann's files declare al_beckmann_lambda (beckmann's also al_erfcx) ahead and use
+// them, so a variant with either distribution must stitch this file too.
 
 // Height-correlated Smith G2 = 1 / (1 + Lambda(w) + Lambda(v)), CONTRACT.md 2.
 // Lambdas >= 0; exact to rounding.
@@ -82,7 +82,7 @@ real al_erfcx(real x) {
 // the bracket R(a)/a beyond a = 4 (no cancellation; at most 36x below). 0 at s2 = 0;
 // c is floored at 1e-20 so grazing gives a large finite value (<= 3e19). Relative
 // error ~2 a^2 ulp (exp(-a^2)); measured vs the contract's formula in long double:
-// fp64 <= 1.9e-13 (at Lambda = 1e-248), fp32 <= 9.2e-6 (a = 3.95, the bracket cancels).
+// fp64 <= 2.8e-13 (at Lambda = 1e-248), fp32 <= 1.5e-5 (a near 4, the bracket cancels).
 real al_beckmann_lambda(real alpha, real c, real s2) {
     if (s2 <= AL_R(0.0)) return AL_R(0.0);
     real a = max(c, AL_R(1e-20)) / (alpha * sqrt(s2));
