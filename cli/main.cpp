@@ -192,7 +192,8 @@ std::optional<arealight::CaseSet> read_case_files(const std::vector<std::string>
 struct ReportArgs {
     std::vector<std::string> cases, refs;
     std::string pattern, out_dir;
-    std::vector<double> exponents;
+    std::string axis = "param";             // sweep: param or view
+    std::vector<double> values, exponents;  // sweep: --value, --exponent
     int repeats = 7;
     double dispatch_ms = 20;
     unsigned threads = 1;
@@ -234,9 +235,47 @@ int run_report(const ReportArgs& a, bool sweep) {
     opt.dispatch_seconds = a.dispatch_ms * 1e-3;
     opt.threads = a.threads;
     if (sweep) {
-        opt.exponents = a.exponents;
-        if (opt.exponents.empty())
-            for (int k = 0; k <= 10; ++k) opt.exponents.push_back(std::pow(10.0, 0.5 * k));
+        auto bad = [&](const std::string& m) {
+            print_diagnostic({arealight::Severity::Error, "", 0, "sweep: " + m});
+            return kBadInput;
+        };
+        const auto axis = arealight::parse_sweep_axis(a.axis);
+        if (!axis) return bad(fmt::format("--axis '{}': expected param or view", a.axis));
+        opt.axis = *axis;
+        std::set<arealight::Distribution> dists;
+        for (const auto& v : matching) dists.insert(v.dist);
+        std::string names;
+        for (auto d : dists)
+            names += std::string(names.empty() ? "" : ", ") + arealight::to_string(d);
+        // The range a value must lie in, and what it is called.
+        double lo = 0, hi = 1;
+        std::string what = "cos θ_v";
+        if (opt.axis == arealight::SweepAxis::Param) {
+            if (dists.size() > 1)
+                return bad(fmt::format(
+                    "--axis param: the variants matching '{}' span several distributions ({}), "
+                    "whose parameters differ; add dist=... to the pattern, or sweep --axis view",
+                    a.pattern, names));
+            const auto& p = arealight::sweep_parameter(*dists.begin());
+            lo = p.min;
+            hi = p.max;
+            what = p.field;
+            if (!a.exponents.empty() && p.field != "exponent")
+                return bad(
+                    fmt::format("--exponent: {} has no exponent; its parameter is {} (--value)",
+                                names, p.field));
+        } else if (!a.exponents.empty()) {
+            return bad("--exponent sweeps the exponent: it needs --axis param");
+        }
+        opt.values = a.values;
+        opt.values.insert(opt.values.end(), a.exponents.begin(), a.exponents.end());
+        for (double x : opt.values) {
+            const bool ok =
+                opt.axis == arealight::SweepAxis::View ? x > 0 && x <= 1 : x >= lo && x <= hi;
+            if (!ok || !std::isfinite(x))
+                return bad(fmt::format("value {:g}: {} must lie in {}{:g}, {:g}]", x, what,
+                                       opt.axis == arealight::SweepAxis::View ? "(" : "[", lo, hi));
+        }
     }
     if (!a.refs.empty()) {
         arealight::ResultSet ref;
@@ -376,21 +415,41 @@ int main(int argc, char** argv) {
     rep.threads = swp.threads = threads;
     auto* report = app.add_subcommand(
         "report",
-        "Error against cost of every variant matching a pattern: instruction counts, time "
-        "ratio to the point light, error against the oracle; writes report.json, report.md, "
-        "report.svg, report_x86.svg");
+        "Error against cost of every variant matching a pattern (Phong and microfacet: blinn, "
+        "beckmann, ggx): SPIR-V and lavapipe x86-64 instruction counts, time ratio to the "
+        "point light of the same distribution and shape (dist=<same>,method=point, same "
+        "sided/verts where that variant exists, else the family's default shape), error "
+        "against the oracle per quantity: diffuse, specular, and moment (phong) or ndf "
+        "(microfacet); the plots' error is the larger relL2 of specular and moment or ndf. "
+        "Writes report.json, report.md, report.svg, report_x86.svg");
     add_measure_options(report, rep);
     report->add_option("--ref", rep.refs,
                        "oracle results of the cases (repeatable); default: computed here");
     auto* sweep = app.add_subcommand(
         "sweep",
-        "Cost and error against the exponent N (every case's N overridden in turn) for the "
-        "variants matching a pattern; writes sweep.json, sweep.md, sweep_time.svg, "
-        "sweep_error.svg");
+        "Cost and error against one axis, every case overridden along it in turn, the oracle "
+        "recomputed per value, for the variants matching a pattern. --axis param (default): "
+        "the distribution's parameter: exponent N for phong and blinn (10^0, 10^0.5, ..., "
+        "10^5), alpha for beckmann and ggx (0.001, 0.002, 0.005, ..., 0.5, 1); the variants "
+        "must share one distribution (else exit 1). --axis view: each case's v rotated in the "
+        "plane of n and v to cos(theta_v) = 1, 0.9, 0.7, 0.5, 0.3, 0.2, 0.1, 0.05, 0.02, 0.01 "
+        "(normal to grazing); any distributions. Time is the ratio to the point light of the "
+        "same distribution and shape; error the larger relL2 of specular and moment (phong) or "
+        "ndf (microfacet). Writes sweep.json, sweep.md, sweep_time.svg, sweep_error.svg, the x "
+        "axis named by the axis");
     add_measure_options(sweep, swp);
     sweep
+        ->add_option("--axis", swp.axis,
+                     "param (exponent or alpha of the variants' distribution) or view "
+                     "(cos theta_v); another value is exit 1")
+        ->capture_default_str();
+    sweep->add_option("--value", swp.values,
+                      "values to sweep (repeatable; default the axis's table above): exponent "
+                      "in [1, 100000], alpha in [0.001, 1], cos theta_v in (0, 1]");
+    sweep
         ->add_option("--exponent", swp.exponents,
-                     "exponents to sweep (repeatable; default 10^0, 10^0.5, ..., 10^5)")
+                     "exponents to sweep, as --value (repeatable; --axis param on phong or "
+                     "blinn only)")
         ->check(CLI::Range(1.0, 100000.0));
 
     try {

@@ -15,16 +15,96 @@
 #include "arealight/svg_plot.hpp"
 
 namespace arealight {
-namespace {
 
-// Cases per timed dispatch at most: 2^18 cases are 54 MB of packed input.
-constexpr std::size_t kMaxDispatchCases = 1 << 18;
-
-double elapsed_since(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+const char* to_string(SweepAxis a) {
+    switch (a) {
+        case SweepAxis::Param:
+            return "param";
+        case SweepAxis::View:
+            return "view";
+        case SweepAxis::None:
+            break;
+    }
+    return "none";
 }
 
-// The point-light variant of the same shape: same cases, the cheapest shader.
+std::optional<SweepAxis> parse_sweep_axis(const std::string& s) {
+    if (s == "param") return SweepAxis::Param;
+    if (s == "view") return SweepAxis::View;
+    return std::nullopt;
+}
+
+const std::vector<SweepParameter>& sweep_parameters() {
+    // 10^0, 10^0.5, ..., 10^5: the exponent range of CONTRACT.md section 2.
+    static const std::vector<double> exponents = [] {
+        std::vector<double> e;
+        for (int k = 0; k <= 10; ++k) e.push_back(std::pow(10.0, 0.5 * k));
+        return e;
+    }();
+    // 1-2-5 per decade over the alpha range of CONTRACT.md section 2.
+    static const std::vector<double> alphas = {0.001, 0.002, 0.005, 0.01, 0.02,
+                                               0.05,  0.1,   0.2,   0.5,  1.0};
+    static const std::vector<SweepParameter> table = {
+        {Distribution::Phong, "exponent", "N", exponents, 1.0, 100000.0},
+        {Distribution::Blinn, "exponent", "N", exponents, 1.0, 100000.0},
+        {Distribution::Beckmann, "alpha", "α", alphas, 0.001, 1.0},
+        {Distribution::Ggx, "alpha", "α", alphas, 0.001, 1.0},
+    };
+    return table;
+}
+
+const SweepParameter& sweep_parameter(Distribution d) {
+    for (const auto& p : sweep_parameters())
+        if (p.dist == d) return p;
+    return sweep_parameters().front();  // unreachable: one row per distribution
+}
+
+const std::vector<double>& view_sweep_cosines() {
+    static const std::vector<double> c = {1, 0.9, 0.7, 0.5, 0.3, 0.2, 0.1, 0.05, 0.02, 0.01};
+    return c;
+}
+
+Case sweep_case(const Case& c, SweepAxis axis, double value) {
+    Case o = c;
+    if (axis == SweepAxis::Param) {
+        if (sweep_parameter(c.material.distribution).field == "alpha")
+            o.material.alpha = value;
+        else
+            o.material.exponent = value;
+    } else if (axis == SweepAxis::View) {
+        auto dot = [](const Vec3& a, const Vec3& b) {
+            return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        };
+        auto unit = [&](const Vec3& a) {
+            const double l = std::sqrt(dot(a, a));
+            return l > 0 ? Vec3{a[0] / l, a[1] / l, a[2] / l} : a;
+        };
+        const Vec3 n = unit(c.n), v = unit(c.v);
+        auto tangent = [&](const Vec3& w) {
+            const double d = dot(w, n);
+            return Vec3{w[0] - d * n[0], w[1] - d * n[1], w[2] - d * n[2]};
+        };
+        Vec3 t = tangent(v);
+        if (dot(t, t) < 1e-24) {
+            // v along n: the plane of n and v is any; take the axis least aligned with n.
+            int k = 0;
+            for (int i = 1; i < 3; ++i)
+                if (std::abs(n[i]) < std::abs(n[k])) k = i;
+            Vec3 e{0, 0, 0};
+            e[k] = 1;
+            t = tangent(e);
+        }
+        t = unit(t);
+        const double cv = std::clamp(value, -1.0, 1.0), sv = std::sqrt(1 - cv * cv);
+        for (int i = 0; i < 3; ++i) o.v[i] = cv * n[i] + sv * t[i];
+    }
+    return o;
+}
+
+const char* second_quantity(const Variant& v) {
+    return is_microfacet(v.dist) ? "ndf" : "moment";
+}
+
 Variant baseline_of(const Variant& v) {
     Variant b;
     b.dist = v.dist;
@@ -32,7 +112,19 @@ Variant baseline_of(const Variant& v) {
     b.method = Method::Point;
     b.sided = v.sided;
     b.verts = v.verts;
+    if (is_valid(b)) return b;
+    b.sided = Variant{}.sided;
+    b.verts = Variant{}.verts;
     return b;
+}
+
+namespace {
+
+// Cases per timed dispatch at most: 2^18 cases are 54 MB of packed input.
+constexpr std::size_t kMaxDispatchCases = 1 << 18;
+
+double elapsed_since(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 double median(std::vector<double> x) {
@@ -46,15 +138,16 @@ const QuantityScore* find_score(const ReportRow& r, const std::string& q) {
     return nullptr;
 }
 
-// Rows on the error-cost front: no other row of the same exponent and shape (so
-// the same cases) is at most as costly and at most as wrong, and better in one.
+// Rows on the error-cost front: no other row of the same value, distribution and
+// shape (so the same cases) is at most as costly and at most as wrong, and better
+// in one.
 void mark_pareto(std::vector<ReportRow>& rows) {
     for (auto& a : rows) {
         a.pareto = std::isfinite(a.error()) && std::isfinite(a.ratio);
         if (!a.pareto) continue;
         for (const auto& b : rows) {
-            if (&a == &b || b.exponent != a.exponent || b.variant.sided != a.variant.sided ||
-                b.variant.verts != a.variant.verts)
+            if (&a == &b || b.value != a.value || b.variant.dist != a.variant.dist ||
+                b.variant.sided != a.variant.sided || b.variant.verts != a.variant.verts)
                 continue;
             if (!std::isfinite(b.error()) || !std::isfinite(b.ratio)) continue;
             if (b.ratio <= a.ratio && b.error() <= a.error() &&
@@ -83,28 +176,50 @@ std::string g3(double x) {
     return fmt::format("{:.2e}", x);
 }
 
-std::string method_label(const Variant& v) {
-    std::string s = to_string(v.method);
+// The method and the keys that set its cost class: peak fits, precision, and the
+// radial rule of the microfacet quadrature (with the quadrature size too when
+// `nodes`, where not the default); with the distribution first when a run spans
+// several.
+std::string method_label(const Variant& v, bool with_dist = false, bool nodes = false) {
+    std::string s = with_dist ? std::string(to_string(v.dist)) + "," : std::string();
+    s += to_string(v.method);
     if (is_peak_method(v.method)) {
         if (v.fit == Fit::Paper) s += ",paper";
         if (v.specular == SpecularForm::Sg) s += ",sg";
     }
-    if (v.method == Method::Exact && v.precision == Precision::Fp32) s += ",fp32";
+    if (v.method == Method::Exact) {
+        const Variant d;
+        if (v.precision == Precision::Fp32) s += ",fp32";
+        if (nodes && v.nodes != d.nodes) s += fmt::format(",nodes={}", v.nodes);
+        if (is_microfacet(v.dist) && v.radial != d.radial) s += fmt::format(",radial={}", v.radial);
+    }
     return s;
 }
 
-// The method label plus the quadrature size where it is not the default.
-std::string series_label(const Variant& v) {
-    std::string s = method_label(v);
-    if (v.method == Method::Exact && v.nodes != Variant{}.nodes) s += fmt::format(",{}", v.nodes);
-    return s;
+// The label of one variant's line in a sweep.
+std::string series_label(const Variant& v, bool with_dist) {
+    return method_label(v, with_dist, true);
+}
+
+bool several_distributions(const Report& r) {
+    for (const auto& row : r.rows)
+        if (row.variant.dist != r.rows.front().variant.dist) return true;
+    return false;
+}
+
+// "moment", "ndf", or "moment or ndf" when the rows have both.
+std::string second_quantity_name(const std::vector<const ReportRow*>& rows) {
+    std::set<std::string> q;
+    for (const ReportRow* r : rows) q.insert(second_quantity(r->variant));
+    if (q.size() == 1) return *q.begin();
+    return "moment or ndf";
 }
 
 }  // namespace
 
 double ReportRow::error() const {
     double e = -1;
-    for (const char* q : {"specular", "moment"}) {
+    for (const char* q : {"specular", second_quantity(variant)}) {
         for (const auto& s : scores)
             if (s.quantity == q && std::isfinite(s.rel_l2)) e = std::max(e, s.rel_l2);
     }
@@ -132,6 +247,28 @@ std::optional<Report> run_report(Evaluator& ev, const CaseSet& cases, const Repo
 
     Report report;
     report.pattern = opt.pattern;
+    report.axis = opt.axis;
+    std::vector<double> values = opt.values;
+    if (opt.axis == SweepAxis::Param) {
+        std::set<Distribution> dists;
+        for (const auto& v : variants) dists.insert(v.dist);
+        if (dists.size() > 1)
+            return fail(fmt::format(
+                "a parameter sweep needs the variants of one distribution; '{}' matches several",
+                opt.pattern));
+        const SweepParameter& p = sweep_parameter(variants.front().dist);
+        report.parameter = p.field;
+        report.symbol = p.symbol;
+        report.axis_label = p.field == "alpha" ? "roughness α" : "exponent N";
+        if (values.empty()) values = p.values;
+    } else if (opt.axis == SweepAxis::View) {
+        report.parameter = "cos_theta_v";
+        report.symbol = "cos θ_v";
+        report.axis_label = "cos θ_v (1: view along the normal, 0.01: grazing)";
+        if (values.empty()) values = view_sweep_cosines();
+    } else {
+        values = {0.0};  // a report: every case as given
+    }
 
     // Deterministic counts, once per variant.
     std::vector<std::size_t> spirv(variants.size(), 0), x86(variants.size(), 0);
@@ -147,29 +284,28 @@ std::optional<Report> run_report(Evaluator& ev, const CaseSet& cases, const Repo
         if (progress) progress("compile", k + 1, variants.size());
     }
 
-    std::vector<double> exponents = opt.exponents;
-    if (exponents.empty()) exponents.push_back(0.0);
     std::size_t step = 0;
-    const std::size_t steps = exponents.size() * variants.size();
-    for (double N : exponents) {
+    const std::size_t steps = values.size() * variants.size();
+    for (double value : values) {
         CaseSet set;
         for (const auto& c : cases.cases) {
             bool used = false;
             for (const auto& v : variants) used = used || case_applies(v, c);
             if (!used) continue;
-            set.cases.push_back(c);
-            if (N > 0) set.cases.back().material.exponent = N;
+            set.cases.push_back(sweep_case(c, opt.axis, value));
         }
         if (set.cases.empty()) return fail("no case applies to any matching variant");
         ResultSet ref;
-        if (N == 0 && opt.reference) {
+        if (opt.axis == SweepAxis::None && opt.reference) {
             ref = *opt.reference;
         } else {
             ReferenceOptions ro;
             ro.threads = std::max(1u, opt.threads);
+            const std::string phase = opt.axis == SweepAxis::None
+                                          ? std::string("reference")
+                                          : fmt::format("reference {}={:g}", report.symbol, value);
             ref = reference_all(set, ro, [&](std::size_t d, std::size_t t) {
-                if (progress)
-                    progress(N > 0 ? fmt::format("reference N={:g}", N) : "reference", d, t);
+                if (progress) progress(phase, d, t);
             });
         }
 
@@ -187,7 +323,7 @@ std::optional<Report> run_report(Evaluator& ev, const CaseSet& cases, const Repo
             ReportRow row;
             row.variant = v;
             row.name = canonical_name(v);
-            row.exponent = N;
+            row.value = opt.axis == SweepAxis::None ? 0.0 : value;
             row.cases = todo.size();
             row.spirv_instructions = spirv[k];
             row.x86_instructions = x86[k];
@@ -213,10 +349,13 @@ std::optional<Report> run_report(Evaluator& ev, const CaseSet& cases, const Repo
             if (!copies) return std::nullopt;
             const Packed pack = pack_repeated(todo, *copies);
             const bool is_base = v == base;
-            if (!is_base && !baseline_packs.count(row.baseline)) {
+            // The baseline runs the variant's cases: one pack per baseline and case count
+            // (a variant of a shape its point family lacks runs a subset of the baseline's).
+            const std::string bkey = fmt::format("{} {}", row.baseline, todo.size());
+            if (!is_base && !baseline_packs.count(bkey)) {
                 auto bcopies = copies_for(base);
                 if (!bcopies) return std::nullopt;
-                baseline_packs[row.baseline] = pack_repeated(todo, *bcopies);
+                baseline_packs[bkey] = pack_repeated(todo, *bcopies);
             }
             std::vector<double> tv, tb;
             std::vector<float> res;
@@ -225,7 +364,7 @@ std::optional<Report> run_report(Evaluator& ev, const CaseSet& cases, const Repo
                 if (!ev.run_packed(v, pack.data, pack.count, res, diag, &s)) return std::nullopt;
                 tv.push_back(s / pack.count * 1e9);
                 if (!is_base) {
-                    const Packed& bp = baseline_packs[row.baseline];
+                    const Packed& bp = baseline_packs[bkey];
                     if (!ev.run_packed(base, bp.data, bp.count, res, diag, &s)) return std::nullopt;
                     tb.push_back(s / bp.count * 1e9);
                 }
@@ -253,25 +392,32 @@ std::string report_json(const Report& r) {
     j["case_files"] = r.case_files;
     j["device"] = r.device;
     j["seconds"] = r.seconds;
+    if (r.sweep()) {
+        j["axis"] = to_string(r.axis);
+        j["parameter"] = r.parameter;
+    }
     ordered_json rows = ordered_json::array();
+    auto num = [](double x) { return std::isfinite(x) ? ordered_json(x) : ordered_json(); };
     for (const auto& row : r.rows) {
         ordered_json o;
         o["variant"] = row.name;
         o["baseline"] = row.baseline;
-        if (row.exponent > 0) o["exponent"] = row.exponent;
+        if (r.sweep()) o[r.parameter] = row.value;
         o["cases"] = row.cases;
         o["spirv_instructions"] = row.spirv_instructions;
         o["x86_instructions"] = row.x86_instructions;
         o["ns_per_case"] = row.ns_per_case;
         o["ratio_to_point"] = row.ratio;
         o["pareto"] = row.pareto;
+        // The error of the plots and the front: the larger relL2 of these two.
+        o["error_quantities"] = {"specular", second_quantity(row.variant)};
+        o["error_rel_l2"] = num(row.error());
         ordered_json e;
         for (const auto& s : row.scores) {
             ordered_json q;
             q["n"] = s.n;
             q["missing"] = s.missing;
             q["bad"] = s.bad;
-            auto num = [](double x) { return std::isfinite(x) ? ordered_json(x) : ordered_json(); };
             q["median"] = num(s.median);
             q["p95"] = num(s.p95);
             q["max"] = num(s.max);
@@ -297,30 +443,78 @@ std::string score_cell(const ReportRow& row, const std::string& q) {
     return cell;
 }
 
-std::string table(const std::vector<const ReportRow*>& rows, bool sweep) {
+std::string table(const std::vector<const ReportRow*>& rows, const Report& r) {
+    const std::string second = second_quantity_name(rows);
     std::string t;
-    if (sweep) {
-        t += "| variant | N | cases | ns/case | × point | specular median / p95 / max / relL2 "
-             "| moment median / p95 / max / relL2 |\n";
+    if (r.sweep()) {
+        t += fmt::format(
+            "| variant | {} | cases | ns/case | × point | specular median / p95 / max / relL2 "
+            "| {} median / p95 / max / relL2 |\n",
+            r.symbol, second);
         t += "|---|---:|---:|---:|---:|---|---|\n";
     } else {
-        t += "| variant | cases | SPIR-V | x86-64 | ns/case | × point | diffuse relL2 | specular "
-             "median / p95 / max / relL2 | moment median / p95 / max / relL2 | front |\n";
+        t += fmt::format(
+            "| variant | cases | SPIR-V | x86-64 | ns/case | × point | diffuse relL2 | specular "
+            "median / p95 / max / relL2 | {} median / p95 / max / relL2 | front |\n",
+            second);
         t += "|---|---:|---:|---:|---:|---:|---:|---|---|:---:|\n";
     }
-    for (const ReportRow* r : rows) {
-        if (sweep) {
-            t += fmt::format("| `{}` | {:g} | {} | {:.1f} | {:.2f} | {} | {} |\n", r->name,
-                             r->exponent, r->cases, r->ns_per_case, r->ratio,
-                             score_cell(*r, "specular"), score_cell(*r, "moment"));
+    for (const ReportRow* row : rows) {
+        const std::string q = second_quantity(row->variant);
+        if (r.sweep()) {
+            t += fmt::format("| `{}` | {:g} | {} | {:.1f} | {:.2f} | {} | {} |\n", row->name,
+                             row->value, row->cases, row->ns_per_case, row->ratio,
+                             score_cell(*row, "specular"), score_cell(*row, q));
         } else {
-            const QuantityScore* d = find_score(*r, "diffuse");
+            const QuantityScore* d = find_score(*row, "diffuse");
             t += fmt::format("| `{}` | {} | {} | {} | {:.1f} | {:.2f} | {} | {} | {} | {} |\n",
-                             r->name, r->cases, r->spirv_instructions, r->x86_instructions,
-                             r->ns_per_case, r->ratio, d ? g3(d->rel_l2) : "–",
-                             score_cell(*r, "specular"), score_cell(*r, "moment"),
-                             r->pareto ? "●" : "");
+                             row->name, row->cases, row->spirv_instructions, row->x86_instructions,
+                             row->ns_per_case, row->ratio, d ? g3(d->rel_l2) : "–",
+                             score_cell(*row, "specular"), score_cell(*row, q),
+                             row->pareto ? "●" : "");
         }
+    }
+    return t;
+}
+
+std::string ratio_text(double x) {
+    if (!std::isfinite(x)) return "–";
+    return x < 10 ? fmt::format("{:.1f}×", x) : fmt::format("{:.0f}×", x);
+}
+
+std::string error_text(double x) {
+    return std::isfinite(x) ? fmt::format("{:.1e}", x) : "–";
+}
+
+// A sweep at a glance: one row per variant, one column per value, each cell the
+// time ratio to the point light / the error.
+std::string sweep_summary(const Report& r) {
+    std::vector<double> values;
+    std::vector<std::string> names;
+    for (const auto& row : r.rows) {
+        if (std::find(values.begin(), values.end(), row.value) == values.end())
+            values.push_back(row.value);
+        if (std::find(names.begin(), names.end(), row.name) == names.end())
+            names.push_back(row.name);
+    }
+    std::string t = "| variant |";
+    std::string rule = "|---|";
+    for (double x : values) {
+        t += fmt::format(" {} = {:g} |", r.symbol, x);
+        rule += "---:|";
+    }
+    t += "\n" + rule + "\n";
+    for (const auto& name : names) {
+        t += fmt::format("| `{}` |", name);
+        for (double x : values) {
+            std::string cell = " – |";
+            for (const auto& row : r.rows)
+                if (row.name == name && row.value == x)
+                    cell =
+                        fmt::format(" {} / {} |", ratio_text(row.ratio), error_text(row.error()));
+            t += cell;
+        }
+        t += "\n";
     }
     return t;
 }
@@ -328,48 +522,66 @@ std::string table(const std::vector<const ReportRow*>& rows, bool sweep) {
 }  // namespace
 
 std::string report_markdown(const Report& r) {
-    const bool sweep = !r.rows.empty() && r.rows.front().exponent > 0;
+    const bool sweep = r.sweep();
     std::string files;
     for (const auto& f : r.case_files) files += (files.empty() ? "" : ", ") + ("`" + f + "`");
+    std::string over;
+    if (r.axis == SweepAxis::Param)
+        over = fmt::format(
+            "Every case's {} ({}) set to each value in turn, the oracle recomputed per value.\n\n",
+            r.parameter, r.symbol);
+    else if (r.axis == SweepAxis::View)
+        over =
+            "Every case's view direction v rotated, in the plane of n and v, to the angle θ_v "
+            "from n with each cos θ_v in turn (1: along the normal; small: grazing), the oracle "
+            "recomputed per value.\n\n";
     std::string t = fmt::format(
         "<!-- generated by arealight {}; do not edit -->\n"
         "# arealight {}: `{}`\n\n"
-        "Cases: {}. Device: {}. {} rows in {:.0f} s.\n\n"
+        "Cases: {}. Device: {}. {} rows in {:.0f} s.\n\n{}"
         "Time: median of repeated dispatches on the device, per case; × point is the ratio "
-        "to the point-light variant of the same shape (sided, verts), timed interleaved with "
-        "it. Error: |x − ref| / max(ref, 1e-3) against `arealight reference` (median, p95, "
-        "max) and "
-        "relative L2, the metric of `shared/tools/score`. front: on the error–cost Pareto "
-        "front (error = the larger relL2 of specular and moment).\n\n",
+        "to the point-light variant of the same distribution and shape (sided, verts), timed "
+        "interleaved with it. Error: |x − ref| / max(ref, 1e-3) against `arealight reference` "
+        "(median, p95, max) and relative L2, the metric of `shared/tools/score`; the second "
+        "quantity is moment for phong and ndf for the microfacet distributions. front: on the "
+        "error–cost Pareto front of its distribution and shape (error = the larger relL2 of "
+        "specular and moment or ndf).\n\n",
         sweep ? "sweep" : "report", sweep ? "sweep" : "report", r.pattern, files, r.device,
-        r.rows.size(), r.seconds);
+        r.rows.size(), r.seconds, over);
     std::vector<const ReportRow*> all, shape;
     const Variant d;
     for (const auto& row : r.rows) {
         all.push_back(&row);
         if (row.variant.sided == d.sided && row.variant.verts == d.verts) shape.push_back(&row);
     }
-    if (!sweep && shape.size() != all.size() && !shape.empty()) {
-        t +=
-            "## Default shape (sided=any, verts=8)\n\n" + table(shape, false) + "\n## All rows\n\n";
+    if (sweep) {
+        t += "## Summary\n\nTime ratio to the point light / error (the larger relL2 of specular "
+             "and " +
+             second_quantity_name(all) + ").\n\n" + sweep_summary(r) + "\n## All rows\n\n";
+    } else if (shape.size() != all.size() && !shape.empty()) {
+        t += "## Default shape (sided=any, verts=8)\n\n" + table(shape, r) + "\n## All rows\n\n";
     }
-    t += table(all, sweep);
+    t += table(all, r);
     return t;
 }
 
 std::vector<std::pair<std::string, std::string>> report_pictures(const Report& r) {
     std::vector<std::pair<std::string, std::string>> out;
-    const bool sweep = !r.rows.empty() && r.rows.front().exponent > 0;
+    const bool with_dist = several_distributions(r);
+    std::vector<const ReportRow*> all;
+    for (const auto& row : r.rows) all.push_back(&row);
+    const std::string error_label =
+        "relative L2 error (max of specular, " + second_quantity_name(all) + ")";
     // One colour per method label, in order of first appearance.
     std::vector<std::string> labels;
     for (const auto& row : r.rows) {
-        const std::string l = method_label(row.variant);
+        const std::string l = method_label(row.variant, with_dist);
         if (std::find(labels.begin(), labels.end(), l) == labels.end()) labels.push_back(l);
     }
     auto color = [&](const std::string& l) {
         return plot_color(std::find(labels.begin(), labels.end(), l) - labels.begin());
     };
-    if (!sweep) {
+    if (!r.sweep()) {
         // One shape, so that every point is measured on the same cases: the default
         // one when the run has it.
         const Variant d;
@@ -378,48 +590,52 @@ std::vector<std::pair<std::string, std::string>> report_pictures(const Report& r
             if (row.variant.sided == d.sided && row.variant.verts == d.verts) rows.push_back(&row);
         std::string shape = " (sided=any, verts=8)";
         if (rows.empty()) {
-            for (const auto& row : r.rows) rows.push_back(&row);
+            rows = all;
             shape.clear();
         }
         Plot p;
         p.title = "Error against cost: " + r.pattern + shape;
         p.x_label = "time per case / point light (lavapipe, median)";
-        p.y_label = "relative L2 error (max of specular, moment)";
+        p.y_label = error_label;
         for (const auto& l : labels) {
             PlotSeries s;
             s.name = l;
             s.color = color(l);
             for (const ReportRow* row : rows)
-                if (method_label(row->variant) == l)
+                if (method_label(row->variant, with_dist) == l)
                     s.points.push_back({row->ratio, row->error(), row->name});
             if (!s.points.empty()) p.series.push_back(s);
         }
-        for (const ReportRow* row : rows)
-            if (row->pareto) p.front.push_back({row->ratio, row->error(), row->name});
-        std::sort(p.front.begin(), p.front.end(),
-                  [](const PlotPoint& a, const PlotPoint& b) { return a.x < b.x; });
-        p.front_name = "Pareto front";
+        // One front per distribution is one polyline only when there is one.
+        if (!with_dist) {
+            for (const ReportRow* row : rows)
+                if (row->pareto) p.front.push_back({row->ratio, row->error(), row->name});
+            std::sort(p.front.begin(), p.front.end(),
+                      [](const PlotPoint& a, const PlotPoint& b) { return a.x < b.x; });
+            p.front_name = "Pareto front";
+        }
         out.emplace_back("report.svg", svg_plot(p));
         // The same against the deterministic cost: lavapipe's x86-64 instruction count.
         Plot q = p;
         q.title = "Error against code size: " + r.pattern + shape;
         q.x_label = "x86-64 instructions of the lavapipe shader";
         q.front.clear();
+        q.front_name.clear();
         for (auto& s : q.series) {
             s.points.clear();
             for (const ReportRow* row : rows)
-                if (method_label(row->variant) == s.name && row->x86_instructions > 0)
+                if (method_label(row->variant, with_dist) == s.name && row->x86_instructions > 0)
                     s.points.push_back({double(row->x86_instructions), row->error(), row->name});
         }
         out.emplace_back("report_x86.svg", svg_plot(q));
         return out;
     }
+    const std::string what = r.axis == SweepAxis::View ? "view angle" : r.symbol;
     for (int which = 0; which < 2; ++which) {
         Plot p;
-        p.title = which == 0 ? "Cost against N: " + r.pattern : "Error against N: " + r.pattern;
-        p.x_label = "exponent N";
-        p.y_label = which == 0 ? "time per case / point light"
-                               : "relative L2 error (max of specular, moment)";
+        p.title = (which == 0 ? "Cost against " : "Error against ") + what + ": " + r.pattern;
+        p.x_label = r.axis_label;
+        p.y_label = which == 0 ? "time per case / point light" : error_label;
         std::vector<std::string> names;
         for (const auto& row : r.rows)
             if (std::find(names.begin(), names.end(), row.name) == names.end())
@@ -427,12 +643,12 @@ std::vector<std::pair<std::string, std::string>> report_pictures(const Report& r
         for (std::size_t k = 0; k < names.size(); ++k) {
             PlotSeries s;
             for (const auto& row : r.rows)
-                if (row.name == names[k]) s.name = series_label(row.variant);
+                if (row.name == names[k]) s.name = series_label(row.variant, with_dist);
             s.color = plot_color(k);
             s.line = true;
             for (const auto& row : r.rows)
                 if (row.name == names[k])
-                    s.points.push_back({row.exponent, which == 0 ? row.ratio : row.error(), ""});
+                    s.points.push_back({row.value, which == 0 ? row.ratio : row.error(), ""});
             p.series.push_back(s);
         }
         out.emplace_back(which == 0 ? "sweep_time.svg" : "sweep_error.svg", svg_plot(p));
