@@ -66,10 +66,11 @@ int main(int argc, char** argv) {
         std::string& out = shard_text[i % shards];
         out += fmt::format("namespace al_mirror_{} {{\nusing namespace glm;\n", i);
         out += src;
-        // Peak methods also export one edge integral, for the per-edge tests against
+        // Phong peak methods also export one edge integral, for the per-edge tests against
         // quadrature (tests/test_peak_edge.cpp): the arc [atan2(ag, af), atan2(bg, bf)]
         // of a great circle at distance s = r.m from the lobe axis.
-        const bool probe = arealight::is_peak_method(variants[i].method) &&
+        const bool probe = variants[i].dist == arealight::Distribution::Phong &&
+                           arealight::is_peak_method(variants[i].method) &&
                            variants[i].sided == arealight::Sided::Any &&
                            variants[i].verts == arealight::Variant{}.verts &&
                            variants[i].specular == arealight::SpecularForm::TwoAxis;

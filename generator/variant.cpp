@@ -28,6 +28,8 @@ const Sided kSided[] = {Sided::Any, Sided::One, Sided::Two};
 const Precision kPrecisions[] = {Precision::Fp64, Precision::Fp32};
 const Fit kFits[] = {Fit::Tuned, Fit::Paper};
 const SpecularForm kSpecularForms[] = {SpecularForm::TwoAxis, SpecularForm::Sg};
+const Split kSplits[] = {Split::None, Split::Single, Split::Halved};
+const Factor kFactors[] = {Factor::Closest, Factor::Blend};
 
 // How a key's effective value becomes a preprocessor switch.
 struct DefineRule {
@@ -178,6 +180,12 @@ std::vector<KeyRow> key_rows() {
             "double-axis moment: twoaxis (Arvo's relation) or sg (spherical Gaussians)"),
         key("radial",             &Variant::radial,      {2, 4, 16},     number("AL_RADIAL"),
             "radial Gauss-Legendre nodes of the exact microfacet specular rule"),
+        key("split",              &Variant::split,       kSplits,        one_hot("AL_SPLIT_"),
+            "microfacet peak methods: edge splits before the half-vector map: none, single "
+            "(seed 000 Algorithm 1) or halved (its point, then each piece halved)"),
+        key("factor",             &Variant::factor,      kFactors,       one_hot("AL_FACTOR_"),
+            "microfacet peak methods: half vector of the specular factor: closest (to n) or "
+            "blend (with the vector irradiance's, by solid angle against the lobe's)"),
     };
     // clang-format on
 }
@@ -230,6 +238,33 @@ std::vector<VariantFamily> family_rows() {
              "light_polygon.glsl"}},
         {D::Ggx, M::Point, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}},
             {"dist_ggx.glsl", "microfacet.glsl", "microfacet_brdf.glsl", "polygon.glsl", "light_polygon.glsl"}},
+        {D::Blinn, M::Lorentz, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"fit", {"tuned"}}, {"split", {"single", "halved"}}, {"factor"}},
+            {"dist_blinn.glsl", "microfacet.glsl", "phong_edge.glsl", "method_peak_phong.glsl", "method_peak_microfacet.glsl",
+             "polygon.glsl", "light_polygon.glsl"}},
+        {D::Blinn, M::Pearson, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"fit", {"tuned"}}, {"split", {"single", "halved"}}, {"factor"}},
+            {"dist_blinn.glsl", "microfacet.glsl", "phong_edge.glsl", "method_peak_phong.glsl", "method_peak_microfacet.glsl",
+             "polygon.glsl", "light_polygon.glsl"}},
+        {D::Blinn, M::Ellipsoid, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"fit", {"tuned"}}, {"split", {"single", "halved"}}, {"factor"}},
+            {"dist_blinn.glsl", "microfacet.glsl", "phong_edge.glsl", "method_peak_phong.glsl", "method_peak_microfacet.glsl",
+             "polygon.glsl", "light_polygon.glsl"}},
+        {D::Beckmann, M::Lorentz, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"fit", {"tuned"}}, {"split", {"single", "halved"}}, {"factor"}},
+            {"dist_beckmann.glsl", "microfacet.glsl", "phong_edge.glsl", "method_peak_phong.glsl", "method_peak_microfacet.glsl",
+             "polygon.glsl", "light_polygon.glsl"}},
+        {D::Beckmann, M::Pearson, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"fit", {"tuned"}}, {"split", {"single", "halved"}}, {"factor"}},
+            {"dist_beckmann.glsl", "microfacet.glsl", "phong_edge.glsl", "method_peak_phong.glsl", "method_peak_microfacet.glsl",
+             "polygon.glsl", "light_polygon.glsl"}},
+        {D::Beckmann, M::Ellipsoid, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"fit", {"tuned"}}, {"split", {"single", "halved"}}, {"factor"}},
+            {"dist_beckmann.glsl", "microfacet.glsl", "phong_edge.glsl", "method_peak_phong.glsl", "method_peak_microfacet.glsl",
+             "polygon.glsl", "light_polygon.glsl"}},
+        {D::Ggx, M::Lorentz, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"fit", {"tuned"}}, {"split", {"single", "halved"}}, {"factor"}},
+            {"dist_ggx.glsl", "microfacet.glsl", "phong_edge.glsl", "method_peak_phong.glsl", "method_peak_microfacet.glsl",
+             "polygon.glsl", "light_polygon.glsl"}},
+        {D::Ggx, M::Pearson, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"fit", {"tuned"}}, {"split", {"single", "halved"}}, {"factor"}},
+            {"dist_ggx.glsl", "microfacet.glsl", "phong_edge.glsl", "method_peak_phong.glsl", "method_peak_microfacet.glsl",
+             "polygon.glsl", "light_polygon.glsl"}},
+        {D::Ggx, M::Ellipsoid, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"fit", {"tuned"}}, {"split", {"single", "halved"}}, {"factor"}},
+            {"dist_ggx.glsl", "microfacet.glsl", "phong_edge.glsl", "method_peak_phong.glsl", "method_peak_microfacet.glsl",
+             "polygon.glsl", "light_polygon.glsl"}},
     };
     // clang-format on
 }
@@ -506,6 +541,20 @@ const char* to_string(Fit f) {
 }
 const char* to_string(SpecularForm s) {
     return s == SpecularForm::TwoAxis ? "twoaxis" : "sg";
+}
+const char* to_string(Split s) {
+    switch (s) {
+        case Split::None:
+            return "none";
+        case Split::Single:
+            return "single";
+        case Split::Halved:
+            return "halved";
+    }
+    return "halved";
+}
+const char* to_string(Factor f) {
+    return f == Factor::Closest ? "closest" : "blend";
 }
 bool is_peak_method(Method m) {
     return m == Method::Lorentz || m == Method::Pearson || m == Method::Ellipsoid;

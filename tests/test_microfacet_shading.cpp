@@ -11,6 +11,7 @@
 #include "arealight/evaluator.hpp"
 #include "arealight/reference.hpp"
 #include "eval_support.hpp"
+#include "microfacet_cases.hpp"
 #include "test_support.hpp"
 
 using namespace arealight;
@@ -38,46 +39,6 @@ std::string name_of(Distribution d, const std::string& rest) {
     return std::string("dist=") + to_string(d) + ",light=polygon," + rest;
 }
 
-// Random convex polygons around the mirror direction of views from normal to
-// grazing (n.v down to 0.02), some crossing the horizon, some large; parameters
-// log-uniform over the contract's range (alpha in [1e-3, 1], N in [1, 1e5]); a
-// third two-sided, a third with Schlick f0. A random rigid motion on each.
-CaseSet random_microfacet_polygons(std::uint64_t seed, int count, Distribution d) {
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> U(0, 1);
-    CaseSet set;
-    for (int i = 0; i < count; ++i) {
-        glm::dvec3 n(0, 0, 1);
-        const double nv = 0.02 + 0.98 * U(rng), ph = 2 * kPi * U(rng);
-        const double sv = std::sqrt(1 - nv * nv);
-        glm::dvec3 v(sv * std::cos(ph), sv * std::sin(ph), nv);
-        glm::dvec3 r = 2 * nv * n - v;
-        glm::dvec3 dir =
-            glm::normalize(r + 0.8 * glm::dvec3(U(rng) - 0.5, U(rng) - 0.5, U(rng) - 0.4));
-        glm::dvec3 t1 = glm::normalize(glm::cross(dir, glm::dvec3(0.3, 0.5, 0.8)));
-        glm::dvec3 t2 = glm::cross(dir, t1);
-        const int k = 3 + static_cast<int>(U(rng) * 6);
-        const double dist = 1 + 4 * U(rng), rad = (0.05 + 1.5 * U(rng)) * dist * 0.5;
-        std::vector<glm::dvec3> verts;
-        for (int j = 0; j < k; ++j) {
-            const double a = -2 * kPi * (j + 0.7 * U(rng)) / k;  // clockwise about dir
-            verts.push_back(dist * dir + rad * (std::cos(a) * t1 + std::sin(a) * t2));
-        }
-        const double p = d == Distribution::Blinn ? std::exp(std::log(1e5) * U(rng))
-                                                  : std::exp(std::log(1e-3) * U(rng));
-        Case c = polygon_case("mf-" + std::to_string(i), verts, n, v, d, p, i % 3 == 0);
-        if (i % 3 == 0 && U(rng) < 0.5)
-            std::reverse(c.light.vertices.begin(), c.light.vertices.end());
-        if (i % 3 == 1) {
-            c.material.f0 = U(rng);
-            c.material.has_f0 = true;
-        }
-        set.cases.push_back(transformed(
-            c, random_rotation(rng), glm::dvec3(U(rng) - 0.5, U(rng) - 0.5, U(rng) - 0.5) * 10.0));
-    }
-    return set;
-}
-
 double percentile95(std::vector<double> e) {
     std::sort(e.begin(), e.end());
     return e.empty() ? 0.0 : e[static_cast<std::size_t>(0.95 * (e.size() - 1))];
@@ -87,7 +48,7 @@ double percentile95(std::vector<double> e) {
 
 TEST_CASE("exact microfacet shading matches the oracle on both backends", "[shading][vulkan][microfacet]") {
     for (Distribution d : kMicrofacets) {
-        const CaseSet cases = random_microfacet_polygons(1000 + static_cast<int>(d), 50, d);
+        const CaseSet cases = random_microfacet_polygons(1000 + static_cast<int>(d), 50, d, "mf-");
         std::map<std::string, CaseResult> ref;
         for (const auto& c : cases.cases) ref[c.id] = reference_case(c, {});
         const std::string name = name_of(d, "method=exact");
@@ -141,7 +102,7 @@ TEST_CASE("exact microfacet at O(1) node counts: bounded relL2, backends agree",
         {Distribution::Blinn, "method=exact,nodes=3,radial=2,precision=fp32", 4.2e-3, 3.7e-3},     // [2.7e-3, 2.4e-3]
     };
     for (const Bar& bar : bars) {
-        const CaseSet cases = random_microfacet_polygons(2000 + static_cast<int>(bar.d), 50, bar.d);
+        const CaseSet cases = random_microfacet_polygons(2000 + static_cast<int>(bar.d), 50, bar.d, "mf-");
         std::map<std::string, CaseResult> ref;
         for (const auto& c : cases.cases) ref[c.id] = reference_case(c, {});
         const std::string name = name_of(bar.d, bar.keys);

@@ -106,9 +106,12 @@ TEST_CASE("enumeration: every variant valid, unique, and round-trips", "[variant
     // blinn, beckmann, ggx: exact with nodes 2, 3, 16 x precision x radial 2, 16, and
     // the point baseline; one shape each (sided=any, verts=8).
     const std::size_t microfacet_polygon = 3 * (3 * precision * 2 + 1);
+    // blinn, beckmann, ggx x lorentz, pearson, ellipsoid: split single, halved x factor
+    // closest, blend; one shape, fit=tuned.
+    const std::size_t microfacet_peak_polygon = 3 * 3 * 2 * 2;
     INFO("enumerated " << all.size());
     CHECK(all.size() == phong_exact_polygon + phong_arvo_polygon + phong_peak_polygon +
-                            phong_point_polygon + microfacet_polygon);
+                            phong_point_polygon + microfacet_polygon + microfacet_peak_polygon);
 
     std::set<std::string> names;
     for (const auto& v : all) {
@@ -128,7 +131,7 @@ TEST_CASE("enumeration: every variant valid, unique, and round-trips", "[variant
     CHECK(canonical_name(all[1]) ==
           "dist=phong,method=exact,light=polygon,verts=3,nodes=8,precision=fp32");
     CHECK(canonical_name(all[2]) == "dist=phong,method=exact,light=polygon,verts=3,nodes=12");
-    CHECK(canonical_name(all.back()) == "dist=ggx,method=point,light=polygon");
+    CHECK(canonical_name(all.back()) == "dist=ggx,method=ellipsoid,light=polygon");
     CHECK(enumerate_variants() == all);
 }
 
@@ -239,7 +242,8 @@ TEST_CASE("bad variant names are rejected naming the key", "[variant]") {
     CHECK_THAT(error_of("dist=phong,method=exact,light=polygon,fit=paper"),
                Contains("key 'fit' applies to method=lorentz, pearson, ellipsoid only"));
     CHECK_THAT(error_of("dist=phong,method=arvo,light=polygon,specular=sg"),
-               Contains("key 'specular' applies to method=lorentz, pearson, ellipsoid only"));
+               Contains("key 'specular' applies to dist=phong and method=lorentz, pearson, "
+                        "ellipsoid only"));
     CHECK_THAT(error_of("dist=phong,method=pearson,light=polygon,fit=best"),
                Contains("key 'fit': unknown value 'best' (expected tuned, paper)"));
     CHECK_THAT(error_of("dist=phong,method=exact,light=polygon,nodes=10"),
@@ -391,7 +395,9 @@ TEST_CASE("key table: names in canonical order, required keys, defaults, docs", 
     CHECK(scope("nodes") == "method=exact");
     CHECK(scope("precision") == "method=exact");
     CHECK(scope("fit") == "method=lorentz, pearson, ellipsoid");
-    CHECK(scope("specular") == "method=lorentz, pearson, ellipsoid");
+    CHECK(scope("specular") == "dist=phong and method=lorentz, pearson, ellipsoid");
+    CHECK(scope("split") == "dist=blinn, beckmann, ggx and method=lorentz, pearson, ellipsoid");
+    CHECK(scope("factor") == "dist=blinn, beckmann, ggx and method=lorentz, pearson, ellipsoid");
     // The unknown-key message lists the table.
     std::string listed;
     for (const auto& name : names) listed += (listed.empty() ? "" : ", ") + name;

@@ -31,6 +31,16 @@ enum class Sided { Any, One, Two };
 // reference, defaults to fp64 (fp32 input rounding then dominates its error) and
 // offers fp32; every other method is fp32 only for now.
 enum class Precision { Fp32, Fp64 };
+// Microfacet peak methods (templates/method_peak_microfacet.glsl): how each edge of the
+// lit region is split before its points are mapped to half vectors: none, single
+// (seed 000 Algorithm 1: at the foot of r, where it lies inside the edge) or halved
+// (that point, then each piece halved: at most 3 splits).
+enum class Split { None, Single, Halved };
+// Microfacet peak methods: the representative half vector at which G2, the Jacobian
+// and Fresnel turn ndf into specular: closest (the h-polygon's point closest to n) or
+// blend (that point blended with the half vector of the lit region's vector
+// irradiance by the light's solid angle against the lobe's).
+enum class Factor { Closest, Blend };
 
 // One shader variant. Each key of the key table (variant_keys()) is a typed field
 // here, initialised to the key's default; which keys a variant uses, and which of
@@ -46,6 +56,8 @@ struct Variant {
     Fit fit = Fit::Tuned;                           // peak methods
     SpecularForm specular = SpecularForm::TwoAxis;  // peak methods
     int radial = 16;  // exact microfacets: radial Gauss-Legendre nodes of the specular rule
+    Split split = Split::Halved;     // microfacet peak methods
+    Factor factor = Factor::Blend;   // microfacet peak methods
 
     // Equal when every key of the key table has the same value (a field that no
     // key row reads would not count: each field is a row).
@@ -58,6 +70,8 @@ const char* to_string(Sided s);
 const char* to_string(Precision p);
 const char* to_string(Fit f);
 const char* to_string(SpecularForm s);
+const char* to_string(Split s);
+const char* to_string(Factor f);
 
 // Whether the method is one of seed 000's peak functions (keys fit, specular).
 bool is_peak_method(Method m);

@@ -1,0 +1,58 @@
+// Seeded random microfacet polygon cases shared by the microfacet shading tests.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "test_support.hpp"
+
+namespace arealight::test {
+
+constexpr double kPi_ = 3.14159265358979323846;
+
+// Random convex polygons around the mirror direction of views from normal to
+// grazing (n.v down to 0.02), some crossing the horizon, some large; parameters
+// log-uniform over the contract's range (alpha in [1e-3, 1], N in [1, 1e5]); a
+// third two-sided, a third with Schlick f0. A random rigid motion on each. Case ids
+// are the prefix and the index.
+inline CaseSet random_microfacet_polygons(std::uint64_t seed, int count, Distribution d,
+                                          const std::string& prefix) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> U(0, 1);
+    CaseSet set;
+    for (int i = 0; i < count; ++i) {
+        glm::dvec3 n(0, 0, 1);
+        const double nv = 0.02 + 0.98 * U(rng), ph = 2 * kPi_ * U(rng);
+        const double sv = std::sqrt(1 - nv * nv);
+        glm::dvec3 v(sv * std::cos(ph), sv * std::sin(ph), nv);
+        glm::dvec3 r = 2 * nv * n - v;
+        glm::dvec3 dir =
+            glm::normalize(r + 0.8 * glm::dvec3(U(rng) - 0.5, U(rng) - 0.5, U(rng) - 0.4));
+        glm::dvec3 t1 = glm::normalize(glm::cross(dir, glm::dvec3(0.3, 0.5, 0.8)));
+        glm::dvec3 t2 = glm::cross(dir, t1);
+        const int k = 3 + static_cast<int>(U(rng) * 6);
+        const double dist = 1 + 4 * U(rng), rad = (0.05 + 1.5 * U(rng)) * dist * 0.5;
+        std::vector<glm::dvec3> verts;
+        for (int j = 0; j < k; ++j) {
+            const double a = -2 * kPi_ * (j + 0.7 * U(rng)) / k;  // clockwise about dir
+            verts.push_back(dist * dir + rad * (std::cos(a) * t1 + std::sin(a) * t2));
+        }
+        const double p = d == Distribution::Blinn ? std::exp(std::log(1e5) * U(rng))
+                                                  : std::exp(std::log(1e-3) * U(rng));
+        Case c = polygon_case(prefix + std::to_string(i), verts, n, v, d, p, i % 3 == 0);
+        if (i % 3 == 0 && U(rng) < 0.5)
+            std::reverse(c.light.vertices.begin(), c.light.vertices.end());
+        if (i % 3 == 1) {
+            c.material.f0 = U(rng);
+            c.material.has_f0 = true;
+        }
+        set.cases.push_back(transformed(
+            c, random_rotation(rng), glm::dvec3(U(rng) - 0.5, U(rng) - 0.5, U(rng) - 0.5) * 10.0));
+    }
+    return set;
+}
+
+}  // namespace arealight::test
