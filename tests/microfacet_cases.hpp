@@ -55,4 +55,36 @@ inline CaseSet random_microfacet_polygons(std::uint64_t seed, int count, Distrib
     return set;
 }
 
+// Extreme microfacet polygon cases: alpha 1e-3 and 1 (N 1 and 1e5), views from
+// normal to grazing (n.v 1e-6) and from below (n.v = -0.2), two-sided quads tiny,
+// along r and nearly filling the hemisphere, for blinn, beckmann and ggx.
+inline CaseSet extreme_microfacet_polygons() {
+    CaseSet set;
+    int id = 0;
+    for (Distribution d : {Distribution::Blinn, Distribution::Beckmann, Distribution::Ggx}) {
+        const bool blinn = d == Distribution::Blinn;
+        for (double p : blinn ? std::vector<double>{1.0, 1e5} : std::vector<double>{1e-3, 1.0}) {
+            for (double nv : {1.0, 0.3, 1e-3, 1e-6, -0.2}) {
+                glm::dvec3 n(0, 0, 1);
+                const double sv = std::sqrt(std::max(0.0, 1 - nv * nv));
+                glm::dvec3 v(sv, 0, nv);
+                glm::dvec3 r = glm::normalize(2 * nv * n - v + glm::dvec3(0, 0, 1e-9));
+                glm::dvec3 t1 = glm::normalize(glm::cross(r, glm::dvec3(0, 1, 0)));
+                glm::dvec3 t2 = glm::cross(r, t1);
+                for (double rad : {1e-4, 0.5, 30.0}) {
+                    std::vector<glm::dvec3> quad;
+                    for (int j = 0; j < 4; ++j) {
+                        const double a = -kPi_ / 2 * j;
+                        quad.push_back(2.0 * r + glm::dvec3(0, 0, 0.3) +
+                                       rad * (std::cos(a) * t1 + std::sin(a) * t2));
+                    }
+                    set.cases.push_back(
+                        polygon_case("x" + std::to_string(id++), quad, n, v, d, p, true));
+                }
+            }
+        }
+    }
+    return set;
+}
+
 }  // namespace arealight::test

@@ -19,7 +19,6 @@ using namespace arealight::test;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 const Distribution kMicrofacets[] = {Distribution::Blinn, Distribution::Beckmann,
                                      Distribution::Ggx};
 
@@ -130,31 +129,7 @@ TEST_CASE("microfacet variants: finite and non-negative at the extremes",
     // alpha 1e-3 and 1 (N 1 and 1e5), views from normal to grazing (n.v 1e-6) and
     // from below (n.v < 0: specular 0), lights tiny, along r, crossing the horizon
     // and nearly filling the hemisphere.
-    CaseSet set;
-    int id = 0;
-    for (Distribution d : kMicrofacets) {
-        const bool blinn = d == Distribution::Blinn;
-        for (double p : blinn ? std::vector<double>{1.0, 1e5} : std::vector<double>{1e-3, 1.0}) {
-            for (double nv : {1.0, 0.3, 1e-3, 1e-6, -0.2}) {
-                glm::dvec3 n(0, 0, 1);
-                const double sv = std::sqrt(std::max(0.0, 1 - nv * nv));
-                glm::dvec3 v(sv, 0, nv);
-                glm::dvec3 r = glm::normalize(2 * nv * n - v + glm::dvec3(0, 0, 1e-9));
-                glm::dvec3 t1 = glm::normalize(glm::cross(r, glm::dvec3(0, 1, 0)));
-                glm::dvec3 t2 = glm::cross(r, t1);
-                for (double rad : {1e-4, 0.5, 30.0}) {
-                    std::vector<glm::dvec3> quad;
-                    for (int j = 0; j < 4; ++j) {
-                        const double a = -kPi / 2 * j;
-                        quad.push_back(2.0 * r + glm::dvec3(0, 0, 0.3) +
-                                       rad * (std::cos(a) * t1 + std::sin(a) * t2));
-                    }
-                    set.cases.push_back(
-                        polygon_case("x" + std::to_string(id++), quad, n, v, d, p, true));
-                }
-            }
-        }
-    }
+    const CaseSet set = extreme_microfacet_polygons();
     for (Distribution d : kMicrofacets) {
         for (const char* keys : {"method=exact", "method=exact,nodes=2,radial=2,precision=fp32",
                                  "method=point"}) {
