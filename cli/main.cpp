@@ -18,6 +18,8 @@
 #include <string>
 #include <thread>
 
+#include <unistd.h>  // isatty: a live progress line only on a terminal
+
 #include "arealight/atomic_file.hpp"
 #include "arealight/benchmark.hpp"
 #include "arealight/case_io.hpp"
@@ -43,27 +45,31 @@ void print_diagnostic(const arealight::Diagnostic& d) {
     }
 }
 
-// Reports progress on stderr once a run has taken more than a second.
+// Reports progress on stderr once a run has taken more than a second: one live
+// line (rewritten every 250 ms) on a terminal, plain lines (every 5 s, and the
+// last) when stderr is a file or a pipe, so that logs stay readable.
 class ProgressPrinter {
   public:
     ProgressPrinter(std::string what, std::string unit)
         : what_(std::move(what)),
           unit_(std::move(unit)),
-          start_(std::chrono::steady_clock::now()) {}
+          start_(std::chrono::steady_clock::now()),
+          live_(isatty(fileno(stderr)) != 0) {}
     void operator()(std::size_t done, std::size_t total) {
         const auto now = std::chrono::steady_clock::now();
         const double elapsed = std::chrono::duration<double>(now - start_).count();
-        if (elapsed < 1.0 || (done != total && now - last_ < std::chrono::milliseconds(250)))
-            return;
+        const auto every = live_ ? std::chrono::milliseconds(250) : std::chrono::milliseconds(5000);
+        if (elapsed < 1.0 || (done != total && now - last_ < every)) return;
         last_ = now;
-        fmt::print(stderr, "\r{}: {}/{} {}, {:.1f} s", what_, done, total, unit_, elapsed);
-        if (done == total) fmt::print(stderr, "\n");
+        fmt::print(stderr, "{}{}: {}/{} {}, {:.1f} s{}", live_ ? "\r" : "", what_, done, total,
+                   unit_, elapsed, live_ && done != total ? "" : "\n");
         std::fflush(stderr);
     }
 
   private:
     std::string what_, unit_;
     std::chrono::steady_clock::time_point start_, last_{};
+    bool live_;
 };
 
 int run_reference(const std::string& cases_path, const std::string& out_path, double rel_tol,
