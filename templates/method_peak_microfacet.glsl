@@ -445,13 +445,7 @@ void al_moments_arc(AL_INOUT(AlMoments) M, rvec3 a, rvec3 b, rvec3 m, rvec3 axis
         rvec3 h = al_pmf_half(M, w);
         real phi = al_pmf_azimuth(M, h);
         real sweep = phi - phi_prev;
-        if (sweep > AL_PI) {
-            sweep -= AL_TWO_PI;
-            M.wraps += AL_R(1.0);
-        } else if (sweep < -AL_PI) {
-            sweep += AL_TWO_PI;
-            M.wraps -= AL_R(1.0);
-        }
+        sweep = al_wrap_sweep(sweep, M.wraps);
 #ifdef AL_FIT_PAPER
         rvec3 h_mid = h;
 #else

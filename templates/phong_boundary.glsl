@@ -28,13 +28,7 @@ AlMoments al_moments_begin(rvec3 r) {
 void al_moments_arc(AL_INOUT(AlMoments) M, rvec3 a, rvec3 b, rvec3 m, rvec3 r, rvec3 n,
                     real N) {
     real sweep = al_atan2(dot(b, M.e2), dot(b, M.e1)) - al_atan2(dot(a, M.e2), dot(a, M.e1));
-    if (sweep > AL_PI) {
-        sweep -= AL_TWO_PI;
-        M.wraps += AL_R(1.0);
-    } else if (sweep < -AL_PI) {
-        sweep += AL_TWO_PI;
-        M.wraps -= AL_R(1.0);
-    }
+    sweep = al_wrap_sweep(sweep, M.wraps);
     AlPhongEdge e = al_phong_edge(a, b, m, r, n, N);
     M.sums += e.sums;
     if (e.near_edge) {

@@ -14,6 +14,20 @@ struct AlPhongEdge {
     bool near_edge;
 };
 
+// An azimuth difference wrapped into [-pi, pi], counting the wraps: their signed
+// total is the winding number of the closed boundary about the axis.
+real al_wrap_sweep(real sweep, AL_INOUT(real) wraps) {
+    if (sweep > AL_PI) {
+        wraps += AL_R(1.0);
+        return sweep - AL_TWO_PI;
+    }
+    if (sweep < -AL_PI) {
+        wraps -= AL_R(1.0);
+        return sweep + AL_TWO_PI;
+    }
+    return sweep;
+}
+
 struct AlEdgeFrame {
     real rm, s, c;   // r.m, |r.m|, sqrt(1 - s^2)
     real ag, af;     // a.g, a.f: tau_a = atan(ag, af)
