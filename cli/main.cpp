@@ -30,6 +30,7 @@
 #include "arealight/reference.hpp"
 #include "arealight/report.hpp"
 #include "arealight/score.hpp"
+#include "fit_ltc.hpp"
 #include "summary.hpp"
 
 namespace {
@@ -457,6 +458,8 @@ int main(int argc, char** argv) {
                      "exponents to sweep, as --value (repeatable; --axis param on phong or "
                      "blinn only)")
         ->check(CLI::Range(1.0, 100000.0));
+    arealight::cli::FitLtcArgs fit_args;
+    auto* fit_ltc = arealight::cli::add_fit_ltc_command(app, fit_args);
 
     try {
         app.parse(argc, argv);
@@ -478,5 +481,6 @@ int main(int argc, char** argv) {
         return run_bench(cases_path, bench_variants, exponents, backend, min_cases, repeats);
     if (compare->parsed()) return run_compare(ref_path, out_path, floor);
     if (reference->parsed()) return run_reference(cases_path, out_path, rel_tol, threads, table);
+    if (fit_ltc->parsed()) return arealight::cli::run_fit_ltc(fit_args);
     return kUsage;
 }

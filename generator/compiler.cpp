@@ -283,6 +283,22 @@ std::size_t spirv_instruction_count(const std::vector<uint32_t>& spirv) {
     return count;
 }
 
+std::size_t spirv_texture_sample_count(const std::vector<uint32_t>& spirv) {
+    constexpr std::size_t kHeaderWords = 5;
+    // OpImageSampleImplicitLod (87) .. OpImageSparseDrefGather (96 excluded: 95 is
+    // OpImageFetch) and their sparse forms (305 .. 315): every instruction that reads
+    // an image through a sampler or by texel (SPIR-V spec 3.37.10).
+    auto samples = [](uint32_t op) { return (op >= 87 && op <= 95) || (op >= 305 && op <= 315); };
+    std::size_t count = 0;
+    for (std::size_t at = kHeaderWords; at < spirv.size();) {
+        const std::size_t words = spirv[at] >> 16;
+        if (words == 0 || at + words > spirv.size()) break;
+        count += samples(spirv[at] & 0xffffu);
+        at += words;
+    }
+    return count;
+}
+
 std::string disassemble(const std::vector<uint32_t>& spirv) {
     spvtools::SpirvTools tools(kTargetEnv);
     std::string text;

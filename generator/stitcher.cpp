@@ -16,17 +16,19 @@ int count_lines(const std::string& s) {
     return lines;
 }
 
-void emit_prolog(std::string& out, Language lang) {
+void emit_prolog(std::string& out, const Variant& v, Language lang) {
     if (lang == Language::Glsl) {
         out += "#version 450\n";
         out += "#extension GL_GOOGLE_cpp_style_line_directive : enable\n";
+        if (effective_precision(v) == Precision::Fp16)
+            out += "#extension GL_EXT_shader_explicit_arithmetic_types_float16 : require\n";
     }
 }
 
 // The suffix of a literal at the variant's working precision: fp64 GLSL needs lf
 // (an unsuffixed GLSL literal is fp32 and would be rounded first), C++ has none.
 std::string literal_suffix(const Variant& v, Language lang) {
-    if (effective_precision(v) == Precision::Fp32) return "f";
+    if (effective_precision(v) != Precision::Fp64) return "f";
     return lang == Language::Glsl ? "lf" : "";
 }
 
@@ -53,7 +55,21 @@ std::string expand_literals(const std::string& text, const std::string& suffix) 
 // The few spellings GLSL and C++ do not share, as macros the templates use, and
 // the working precision: the templates compute in `real` and `rvec2..4`.
 void emit_language_macros(std::string& out, const Variant& v, Language lang) {
+    out += lang == Language::Glsl ? "#define AL_LANG_GLSL 1\n" : "#define AL_LANG_CPP 1\n";
     out += lang == Language::Glsl ? "#define AL_INOUT(T) inout T\n" : "#define AL_INOUT(T) T&\n";
+    // The half-precision part of a variant computes in hreal and hvec2..4: fp16 where
+    // the precision is fp16 (the mirror's al_half rounds every operation to fp16,
+    // include/arealight/mirror_support.hpp), else the working precision.
+    if (effective_precision(v) == Precision::Fp16) {
+        out += "#define AL_PRECISION_FP16 1\n";
+        out += lang == Language::Glsl
+                   ? "#define hreal float16_t\n#define hvec2 f16vec2\n#define hvec3 f16vec3\n"
+                     "#define hvec4 f16vec4\n"
+                   : "#define hreal al_half\n#define hvec2 al_hvec2\n#define hvec3 al_hvec3\n"
+                     "#define hvec4 al_hvec4\n";
+    } else {
+        out += "#define hreal float\n#define hvec2 vec2\n#define hvec3 vec3\n#define hvec4 vec4\n";
+    }
     if (effective_precision(v) == Precision::Fp64) {
         out +=
             "#define real double\n#define rvec2 dvec2\n#define rvec3 dvec3\n"
@@ -114,6 +130,21 @@ void emit_tables(std::string& out, const Variant& v, Language lang, const std::s
     if (family_uses(v, "radial")) rule(v.radial, "AL_GR_X", "AL_GR_W");
 }
 
+// The tables the family samples (VariantFamily::samplers), from binding 2 on (the
+// cases and results take 0 and 1): sampled images in GLSL, the mirror's samplers in
+// C++ (bound by its run(), generator/mirror_tool.cpp).
+void emit_samplers(std::string& out, const Variant& v, Language lang) {
+    const VariantFamily* f = find_family(v);
+    if (!f) return;
+    for (std::size_t i = 0; i < f->samplers.size(); ++i) {
+        if (lang == Language::Glsl)
+            out += fmt::format("layout(set = 0, binding = {}) uniform sampler2D {};\n", i + 2,
+                               f->samplers[i]);
+        else
+            out += fmt::format("static thread_local AlSampler2D {};\n", f->samplers[i]);
+    }
+}
+
 void emit_template(std::string& out, const std::string& path, const TemplateLookup& lookup,
                    const std::string& suffix) {
     const std::string* text = lookup(path);
@@ -145,12 +176,13 @@ std::string generate_source(const Variant& v, Language lang) {
 
 std::string generate_source(const Variant& v, Language lang, const TemplateLookup& lookup) {
     std::string out;
-    emit_prolog(out, lang);
+    emit_prolog(out, v, lang);
     emit_banner(out, v, lang);
     emit_language_macros(out, v, lang);
     emit_defines(out, v);
     const std::string suffix = literal_suffix(v, lang);
     emit_tables(out, v, lang, suffix);
+    emit_samplers(out, v, lang);
     for (const auto& path : variant_templates(v, lang)) emit_template(out, path, lookup, suffix);
     return out;
 }

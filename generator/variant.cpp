@@ -20,16 +20,18 @@ namespace {
 
 const Distribution kDists[] = {Distribution::Phong, Distribution::Blinn, Distribution::Beckmann,
                                Distribution::Ggx};
-const Method kMethods[] = {Method::Exact,   Method::Arvo,      Method::Lorentz,
-                           Method::Pearson, Method::Ellipsoid, Method::Point};
+const Method kMethods[] = {Method::Exact,     Method::Arvo, Method::Lorentz, Method::Pearson,
+                           Method::Ellipsoid, Method::Ltc,  Method::Point};
 const LightType kLights[] = {LightType::Polygon, LightType::Disk, LightType::Sphere,
                              LightType::Ellipsoid};
 const Sided kSided[] = {Sided::Any, Sided::One, Sided::Two};
-const Precision kPrecisions[] = {Precision::Fp64, Precision::Fp32};
+const Precision kPrecisions[] = {Precision::Fp64, Precision::Fp32, Precision::Fp16};
 const Fit kFits[] = {Fit::Tuned, Fit::Paper};
 const SpecularForm kSpecularForms[] = {SpecularForm::TwoAxis, SpecularForm::Sg};
 const Split kSplits[] = {Split::None, Split::Single, Split::Halved};
 const Factor kFactors[] = {Factor::Closest, Factor::Blend};
+const Horizon kHorizons[] = {Horizon::Clip, Horizon::Proxy};
+const Edge kEdges[] = {Edge::Acos, Edge::Poly};
 
 // How a key's effective value becomes a preprocessor switch.
 struct DefineRule {
@@ -159,7 +161,8 @@ std::vector<KeyRow> key_rows() {
                      "microfacet distribution (contract-fixed)"),
         required_key("method",    &Variant::method,      kMethods,       one_hot("AL_METHOD_"),
                      "how the integral is computed: exact quadrature reference, arvo's "
-                     "recurrence, lorentz/pearson/ellipsoid peak functions, point baseline"),
+                     "recurrence, lorentz/pearson/ellipsoid peak functions, ltc (linearly "
+                     "transformed cosines, fitted tables), point baseline"),
         required_key("light",     &Variant::light,       kLights,        one_hot("AL_LIGHT_"),
                      "light shape"),
         key("sided",              &Variant::sided,       kSided,
@@ -171,8 +174,9 @@ std::vector<KeyRow> key_rows() {
         key("nodes",              &Variant::nodes,       {2, 3, 8, 12, 16, 24}, number("AL_NODES"),
             "Gauss-Legendre quadrature nodes per edge (per piece of an arc, microfacets)"),
         key("precision",          &Variant::precision,   kPrecisions,
-            mapped("AL_PRECISION_FP64", {{"fp64", "1"}, {"fp32", "0"}}),
-            "arithmetic precision of the shader math (fp32 where the family has no choice)")
+            mapped("AL_PRECISION_FP64", {{"fp64", "1"}, {"fp32", "0"}, {"fp16", "0"}}),
+            "arithmetic precision of the shader math (fp32 where the family has no choice; "
+            "fp16: half-precision edge integrals and horizon, method=ltc)")
             .unused_as("fp32"),
         key("fit",                &Variant::fit,         kFits,          flag("AL_FIT_PAPER", "paper"),
             "peak-function fitting recipe: tuned (ours) or paper (seed 000 as printed)"),
@@ -186,6 +190,12 @@ std::vector<KeyRow> key_rows() {
         key("factor",             &Variant::factor,      kFactors,       one_hot("AL_FACTOR_"),
             "microfacet peak methods: half vector of the specular factor: closest (to n) or "
             "blend (with the vector irradiance's, by solid angle against the lobe's)"),
+        key("horizon",            &Variant::horizon,     kHorizons,      one_hot("AL_HORIZON_"),
+            "method=ltc: clip the transformed polygon to the horizon, or proxy (seed 001: "
+            "a sphere with the same vector form factor, clipped by table)"),
+        key("edge",               &Variant::edge,        kEdges,         one_hot("AL_EDGE_"),
+            "method=ltc: edge integral theta / sin(theta) by acos, or poly (a polynomial "
+            "in cos(theta), seed 001)"),
     };
     // clang-format on
 }
@@ -206,7 +216,7 @@ std::vector<VariantFamily> family_rows() {
     return {
         // dist     method        light       keys ({} = all values)
         //   templates
-        {D::Phong, M::Exact,     L::Polygon, {{"sided"}, {"verts"}, {"nodes", {"8", "12", "16", "24"}}, {"precision"}},
+        {D::Phong, M::Exact,     L::Polygon, {{"sided"}, {"verts"}, {"nodes", {"8", "12", "16", "24"}}, {"precision", {"fp64", "fp32"}}},
             {"dist_phong.glsl", "phong_edge.glsl", "method_exact_phong.glsl", "phong_boundary.glsl",
              "polygon.glsl", "light_polygon.glsl"}},
         {D::Phong, M::Arvo,      L::Polygon, {{"sided"}, {"verts"}},
@@ -222,22 +232,22 @@ std::vector<VariantFamily> family_rows() {
             {"dist_phong.glsl", "phong_edge.glsl", "method_peak_phong.glsl", "phong_boundary.glsl",
              "polygon.glsl", "light_polygon.glsl"}},
         {D::Phong, M::Point,     L::Polygon, {{"sided"}, {"verts"}},
-            {"dist_phong.glsl", "polygon.glsl", "light_polygon.glsl"}},
-        {D::Blinn, M::Exact, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"nodes", {"2", "3", "16"}}, {"precision"}, {"radial", {"2", "16"}}},
+            {"dist_phong.glsl", "polygon.glsl", "light_polygon.glsl"}, {}, false},
+        {D::Blinn, M::Exact, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"nodes", {"2", "3", "16"}}, {"precision", {"fp64", "fp32"}}, {"radial", {"2", "16"}}},
             {"dist_blinn.glsl", "microfacet.glsl", "blinn_radial.glsl", "method_exact_microfacet.glsl", "polygon.glsl",
              "light_polygon.glsl"}},
         {D::Blinn, M::Point, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}},
-            {"dist_blinn.glsl", "microfacet.glsl", "microfacet_brdf.glsl", "polygon.glsl", "light_polygon.glsl"}},
-        {D::Beckmann, M::Exact, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"nodes", {"2", "3", "16"}}, {"precision"}, {"radial", {"2", "16"}}},
+            {"dist_blinn.glsl", "microfacet.glsl", "microfacet_brdf.glsl", "polygon.glsl", "light_polygon.glsl"}, {}, false},
+        {D::Beckmann, M::Exact, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"nodes", {"2", "3", "16"}}, {"precision", {"fp64", "fp32"}}, {"radial", {"2", "16"}}},
             {"dist_beckmann.glsl", "microfacet.glsl", "beckmann_radial.glsl", "method_exact_microfacet.glsl", "polygon.glsl",
              "light_polygon.glsl"}},
         {D::Beckmann, M::Point, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}},
-            {"dist_beckmann.glsl", "microfacet.glsl", "microfacet_brdf.glsl", "polygon.glsl", "light_polygon.glsl"}},
-        {D::Ggx, M::Exact, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"nodes", {"2", "3", "16"}}, {"precision"}, {"radial", {"2", "16"}}},
+            {"dist_beckmann.glsl", "microfacet.glsl", "microfacet_brdf.glsl", "polygon.glsl", "light_polygon.glsl"}, {}, false},
+        {D::Ggx, M::Exact, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"nodes", {"2", "3", "16"}}, {"precision", {"fp64", "fp32"}}, {"radial", {"2", "16"}}},
             {"dist_ggx.glsl", "microfacet.glsl", "ggx_radial.glsl", "method_exact_microfacet.glsl", "polygon.glsl",
              "light_polygon.glsl"}},
         {D::Ggx, M::Point, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}},
-            {"dist_ggx.glsl", "microfacet.glsl", "microfacet_brdf.glsl", "polygon.glsl", "light_polygon.glsl"}},
+            {"dist_ggx.glsl", "microfacet.glsl", "microfacet_brdf.glsl", "polygon.glsl", "light_polygon.glsl"}, {}, false},
         {D::Blinn, M::Lorentz, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"fit", {"tuned"}}, {"split", {"single", "halved"}}, {"factor"}},
             {"dist_blinn.glsl", "microfacet.glsl", "phong_edge.glsl", "method_peak_phong.glsl", "method_peak_microfacet.glsl",
              "polygon.glsl", "light_polygon.glsl"}},
@@ -265,6 +275,15 @@ std::vector<VariantFamily> family_rows() {
         {D::Ggx, M::Ellipsoid, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"fit", {"tuned"}}, {"split", {"single", "halved"}}, {"factor"}},
             {"dist_ggx.glsl", "microfacet.glsl", "phong_edge.glsl", "method_peak_phong.glsl", "method_peak_microfacet.glsl",
              "polygon.glsl", "light_polygon.glsl"}},
+        // LTC (seed 001): fitted tables sampled as textures (data/ltc/, arealight fit-ltc).
+        {D::Phong, M::Ltc, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"precision", {"fp32", "fp16"}, "fp32"}, {"horizon"}, {"edge"}},
+            {"polygon.glsl", "method_ltc.glsl"}, {"al_ltc_matrix", "al_ltc_amplitude"}, false},
+        {D::Blinn, M::Ltc, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"precision", {"fp32", "fp16"}, "fp32"}, {"horizon"}, {"edge"}},
+            {"polygon.glsl", "method_ltc.glsl"}, {"al_ltc_matrix", "al_ltc_amplitude"}, false},
+        {D::Beckmann, M::Ltc, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"precision", {"fp32", "fp16"}, "fp32"}, {"horizon"}, {"edge"}},
+            {"polygon.glsl", "method_ltc.glsl"}, {"al_ltc_matrix", "al_ltc_amplitude"}, false},
+        {D::Ggx, M::Ltc, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"precision", {"fp32", "fp16"}, "fp32"}, {"horizon"}, {"edge"}},
+            {"polygon.glsl", "method_ltc.glsl"}, {"al_ltc_matrix", "al_ltc_amplitude"}, false},
     };
     // clang-format on
 }
@@ -286,6 +305,8 @@ struct Tables {
     std::vector<VariantFamily> families;  // key value lists resolved
     // uses[f][k]: family f's values of key k, or nullopt where it does not use it.
     std::vector<std::vector<std::optional<std::vector<std::string>>>> uses;
+    // defaults[f][k]: family f's default of key k (its own where the row names one).
+    std::vector<std::vector<std::string>> defaults;
     std::vector<Scope> scopes;  // per key
     std::vector<KeyInfo> info;
 };
@@ -400,11 +421,17 @@ const Tables& tables() {
         }
         for (const auto& f : t.families) {
             std::vector<std::optional<std::vector<std::string>>> uses(t.keys.size());
+            std::vector<std::string> defaults(t.keys.size());
+            for (std::size_t k = 0; k < t.keys.size(); ++k) defaults[k] = t.keys[k].default_value;
             for (const auto& fk : f.keys) {
-                for (std::size_t k = 0; k < t.keys.size(); ++k)
-                    if (t.keys[k].name == fk.key) uses[k] = fk.values;
+                for (std::size_t k = 0; k < t.keys.size(); ++k) {
+                    if (t.keys[k].name != fk.key) continue;
+                    uses[k] = fk.values;
+                    if (!fk.default_value.empty()) defaults[k] = fk.default_value;
+                }
             }
             t.uses.push_back(std::move(uses));
+            t.defaults.push_back(std::move(defaults));
         }
         for (std::size_t k = 0; k < t.keys.size(); ++k) {
             const KeyRow& row = t.keys[k];
@@ -531,10 +558,18 @@ const char* to_string(Method m) {
             return "pearson";
         case Method::Ellipsoid:
             return "ellipsoid";
+        case Method::Ltc:
+            return "ltc";
         case Method::Point:
             return "point";
     }
     return "exact";
+}
+const char* to_string(Horizon h) {
+    return h == Horizon::Clip ? "clip" : "proxy";
+}
+const char* to_string(Edge e) {
+    return e == Edge::Acos ? "acos" : "poly";
 }
 const char* to_string(Fit f) {
     return f == Fit::Tuned ? "tuned" : "paper";
@@ -560,7 +595,15 @@ bool is_peak_method(Method m) {
     return m == Method::Lorentz || m == Method::Pearson || m == Method::Ellipsoid;
 }
 const char* to_string(Precision p) {
-    return p == Precision::Fp64 ? "fp64" : "fp32";
+    switch (p) {
+        case Precision::Fp64:
+            return "fp64";
+        case Precision::Fp32:
+            return "fp32";
+        case Precision::Fp16:
+            return "fp16";
+    }
+    return "fp32";
 }
 Precision effective_precision(const Variant& v) {
     static const std::size_t k = *key_index("precision");
@@ -628,6 +671,10 @@ std::optional<Variant> parse_variant(const std::string& name, const DiagnosticCo
     }
     const auto f = family_index(v);
     if (!f) return fail(fmt::format("no variant for {} yet", family_name(v)));
+    // A key not named takes the family's default.
+    for (std::size_t k = 0; k < t.keys.size(); ++k)
+        if (!t.keys[k].required && !seen.count(t.keys[k].name) && t.uses[*f][k])
+            t.keys[k].set(v, t.defaults[*f][k]);
     // A family may offer fewer values of a key than the key has.
     for (std::size_t k = 0; k < t.keys.size(); ++k) {
         const auto& values = t.uses[*f][k];
@@ -639,7 +686,7 @@ std::optional<Variant> parse_variant(const std::string& name, const DiagnosticCo
         return fail(
             fmt::format("key '{}' must be given for {}: its default {} is not offered "
                         "(expected {})",
-                        row.name, family_name(v), row.default_value, join(*values)));
+                        row.name, family_name(v), t.defaults[*f][k], join(*values)));
     }
     return v;
 }
@@ -661,11 +708,13 @@ bool is_valid(const Variant& v) {
 std::string canonical_name(const Variant& v) {
     const Tables& t = tables();
     std::string s = family_name(v);
+    const auto f = family_index(v);
     for (std::size_t k = 0; k < t.keys.size(); ++k) {
         const KeyRow& row = t.keys[k];
         if (row.required || !applies(v, k)) continue;
         const std::string value = row.get(v);
-        if (value != row.default_value) s += fmt::format(",{}={}", row.name, value);
+        const std::string& fallback = f ? t.defaults[*f][k] : row.default_value;
+        if (value != fallback) s += fmt::format(",{}={}", row.name, value);
     }
     return s;
 }

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <map>
 
 #include "arealight/compiler.hpp"
@@ -147,15 +148,32 @@ bool Evaluator::run_packed(const Variant& v, const std::vector<float>& packed, s
                            std::vector<float>& results, const DiagnosticConsumer& diag,
                            double* seconds) {
     const std::string name = canonical_name(v);
+    // The tables the variant samples, bound the same way on both backends.
+    std::vector<const Texture2D*> textures;
+    try {
+        textures = variant_textures(v);
+    } catch (const std::exception& e) {
+        if (diag) diag({Severity::Error, "", 0, e.what()});
+        return false;
+    }
     if (impl_->opt.backend == Backend::Cpu) {
-        const MirrorFn fn = find_mirror(name);
-        if (!fn) {
+        const MirrorEntry* entry = find_mirror_entry(name);
+        if (!entry) {
             if (diag) diag({Severity::Error, "", 0, "variant " + name + " has no CPU mirror"});
+            return false;
+        }
+        if (entry->samplers != textures.size()) {
+            if (diag)
+                diag({Severity::Error, "", 0,
+                      "variant " + name + ": its CPU mirror samples " +
+                          std::to_string(entry->samplers) + " textures but " +
+                          std::to_string(textures.size()) +
+                          " were found for it (a stale mirror build?)"});
             return false;
         }
         std::vector<float> out(count * kFloatsPerResult);
         const auto t0 = std::chrono::steady_clock::now();
-        fn(packed.data(), out.data(), count);
+        entry->run(packed.data(), out.data(), count, textures.data(), textures.size());
         if (seconds)
             *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         results.swap(out);
@@ -168,7 +186,7 @@ bool Evaluator::run_packed(const Variant& v, const std::vector<float>& packed, s
         it = impl_->spirv.emplace(name, std::move(*words)).first;
     }
     return impl_->runner->run(it->second, packed.data(), packed.size() * sizeof(float), count,
-                              results, kFloatsPerResult, diag, seconds);
+                              results, kFloatsPerResult, diag, seconds, textures);
 }
 
 std::optional<ResultSet> Evaluator::run(const Variant& v, const CaseSet& cases,
@@ -184,13 +202,15 @@ std::optional<ResultSet> Evaluator::run(const Variant& v, const CaseSet& cases,
     out.variant = canonical_name(v);
     out.backend = to_string(impl_->opt.backend);
     const bool phong = v.dist == Distribution::Phong;
+    const VariantFamily* family = find_family(v);
+    const bool second = family && family->second_quantity;
     for (std::size_t i = 0; i < todo.size(); ++i) {
         CaseResult r;
         r.id = todo[i]->id;
         const float* x = &raw[i * kFloatsPerResult];
         r.diffuse = x[0];
         r.specular = x[1];
-        if (v.method != Method::Point) (phong ? r.moment : r.ndf) = x[2];
+        if (second) (phong ? r.moment : r.ndf) = x[2];
         out.results.push_back(std::move(r));
     }
     if (stats) {

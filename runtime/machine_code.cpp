@@ -129,7 +129,8 @@ std::optional<MachineCodeStats> lavapipe_machine_code(const Variant& v,
         std::vector<float> out;
         const float dummy[kFloatsPerCase] = {};
         // llvmpipe JIT-compiles at the first dispatch: run one (empty) case.
-        if (!runner || !runner->run(*spirv, dummy, sizeof dummy, 1, out, kFloatsPerResult, diag))
+        if (!runner || !runner->run(*spirv, dummy, sizeof dummy, 1, out, kFloatsPerResult, diag,
+                                    nullptr, variant_textures(v)))
             return std::nullopt;
     }
     std::vector<fs::path> added;

@@ -187,6 +187,11 @@ std::string method_label(const Variant& v, bool with_dist = false, bool nodes = 
         if (v.fit == Fit::Paper) s += ",paper";
         if (v.specular == SpecularForm::Sg) s += ",sg";
     }
+    if (v.method == Method::Ltc) {
+        if (v.horizon == Horizon::Proxy) s += ",proxy";
+        if (v.edge == Edge::Poly) s += ",poly";
+        if (v.precision == Precision::Fp16) s += ",fp16";
+    }
     if (v.method == Method::Exact) {
         const Variant d;
         if (v.precision == Precision::Fp32) s += ",fp32";
@@ -272,10 +277,13 @@ std::optional<Report> run_report(Evaluator& ev, const CaseSet& cases, const Repo
 
     // Deterministic counts, once per variant.
     std::vector<std::size_t> spirv(variants.size(), 0), x86(variants.size(), 0);
+    std::vector<std::size_t> fetches(variants.size(), 0), table_bytes(variants.size(), 0);
     for (std::size_t k = 0; k < variants.size(); ++k) {
         auto words = build_spirv(variants[k], true, diag);
         if (!words) return std::nullopt;
         spirv[k] = spirv_instruction_count(*words);
+        fetches[k] = spirv_texture_sample_count(*words);
+        for (const Texture2D* t : variant_textures(variants[k])) table_bytes[k] += t->bytes();
         if (!opt.shader_cache_dir.empty()) {
             auto code = lavapipe_machine_code(variants[k], opt.shader_cache_dir, diag);
             if (!code) return std::nullopt;
@@ -327,6 +335,8 @@ std::optional<Report> run_report(Evaluator& ev, const CaseSet& cases, const Repo
             row.cases = todo.size();
             row.spirv_instructions = spirv[k];
             row.x86_instructions = x86[k];
+            row.table_bytes = table_bytes[k];
+            row.texture_fetches = fetches[k];
             row.scores = score_results(ref, *out, opt.floor);
 
             const Variant base = baseline_of(v);
@@ -406,6 +416,8 @@ std::string report_json(const Report& r) {
         o["cases"] = row.cases;
         o["spirv_instructions"] = row.spirv_instructions;
         o["x86_instructions"] = row.x86_instructions;
+        o["table_bytes"] = row.table_bytes;
+        o["texture_fetches"] = row.texture_fetches;
         o["ns_per_case"] = row.ns_per_case;
         o["ratio_to_point"] = row.ratio;
         o["pareto"] = row.pareto;
@@ -434,6 +446,13 @@ std::string report_json(const Report& r) {
 
 namespace {
 
+// Table bytes as the reader wants them: – for none, KiB above 1 KiB.
+std::string bytes_text(std::size_t b) {
+    if (b == 0) return "–";
+    if (b < 1024) return fmt::format("{} B", b);
+    return fmt::format("{:g} KiB", b / 1024.0);
+}
+
 std::string score_cell(const ReportRow& row, const std::string& q) {
     const QuantityScore* s = find_score(row, q);
     if (!s) return "–";
@@ -454,10 +473,11 @@ std::string table(const std::vector<const ReportRow*>& rows, const Report& r) {
         t += "|---|---:|---:|---:|---:|---|---|\n";
     } else {
         t += fmt::format(
-            "| variant | cases | SPIR-V | x86-64 | ns/case | × point | diffuse relL2 | specular "
-            "median / p95 / max / relL2 | {} median / p95 / max / relL2 | front |\n",
+            "| variant | cases | SPIR-V | x86-64 | tables | fetches | ns/case | × point | diffuse "
+            "relL2 | specular median / p95 / max / relL2 | {} median / p95 / max / relL2 | front "
+            "|\n",
             second);
-        t += "|---|---:|---:|---:|---:|---:|---:|---|---|:---:|\n";
+        t += "|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---|:---:|\n";
     }
     for (const ReportRow* row : rows) {
         const std::string q = second_quantity(row->variant);
@@ -467,8 +487,9 @@ std::string table(const std::vector<const ReportRow*>& rows, const Report& r) {
                              score_cell(*row, "specular"), score_cell(*row, q));
         } else {
             const QuantityScore* d = find_score(*row, "diffuse");
-            t += fmt::format("| `{}` | {} | {} | {} | {:.1f} | {:.2f} | {} | {} | {} | {} |\n",
+            t += fmt::format("| `{}` | {} | {} | {} | {} | {} | {:.1f} | {:.2f} | {} | {} | {} | {} |\n",
                              row->name, row->cases, row->spirv_instructions, row->x86_instructions,
+                             bytes_text(row->table_bytes), row->texture_fetches,
                              row->ns_per_case, row->ratio, d ? g3(d->rel_l2) : "–",
                              score_cell(*row, "specular"), score_cell(*row, q),
                              row->pareto ? "●" : "");

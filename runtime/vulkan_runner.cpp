@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <limits>
+#include <map>
 #include <unordered_map>
 #include <utility>
 
@@ -18,19 +19,38 @@ namespace {
 constexpr uint64_t kFenceTimeoutNs = 60ull * 1000 * 1000 * 1000;
 constexpr uint32_t kSpirvMagic = 0x07230203;
 constexpr uint32_t kOpCapability = 17;       // SPIR-V spec 3.42.2
+constexpr uint32_t kOpDecorate = 71;         // SPIR-V spec 3.42.3
+constexpr uint32_t kCapabilityFloat16 = 9;   // SPIR-V spec 3.31
 constexpr uint32_t kCapabilityFloat64 = 10;  // SPIR-V spec 3.31
+constexpr uint32_t kDecorationBinding = 33;  // SPIR-V spec 3.20
+constexpr uint32_t kFirstTextureBinding = 2;
+constexpr VkFormat kTextureFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+// Cached texture images beyond this are dropped (those the current run needs excepted).
+constexpr std::size_t kMaxCachedImages = 32;
 
-// Whether the module declares `capability`. OpCapability instructions come first
-// after the 5-word header (SPIR-V spec 2.4, logical layout), so the scan stops at
-// the first other instruction.
-bool spirv_declares_capability(const std::vector<uint32_t>& words, uint32_t capability) {
+// What run() needs to know about a module before binding it: the capabilities that need a
+// device feature, and the largest descriptor binding it declares (-1: none).
+struct SpirvFacts {
+    bool float16 = false, float64 = false;
+    int64_t max_binding = -1;
+};
+
+// One pass over the instructions after the 5-word header (SPIR-V spec 2.3, 2.4); a
+// malformed word count ends the scan (the driver rejects such a module anyway).
+SpirvFacts scan_spirv(const std::vector<uint32_t>& words) {
+    SpirvFacts facts;
     for (std::size_t i = 5; i < words.size();) {
         const uint32_t count = words[i] >> 16, opcode = words[i] & 0xffffu;
-        if (opcode != kOpCapability || count < 2 || i + 1 >= words.size()) return false;
-        if (words[i + 1] == capability) return true;
+        if (count == 0 || i + count > words.size()) break;
+        if (opcode == kOpCapability && count >= 2) {
+            facts.float16 |= words[i + 1] == kCapabilityFloat16;
+            facts.float64 |= words[i + 1] == kCapabilityFloat64;
+        } else if (opcode == kOpDecorate && count >= 4 && words[i + 2] == kDecorationBinding) {
+            facts.max_binding = std::max<int64_t>(facts.max_binding, words[i + 3]);
+        }
         i += count;
     }
-    return false;
+    return facts;
 }
 // Push constant block of the shader contract: uint count (offset 0), uint base (offset 4).
 struct PushConstants {
@@ -141,6 +161,25 @@ class DeviceHandle {
     Destroy destroy_ = nullptr;
 };
 
+// A transient command pool on the queue family and one primary command buffer from it
+// (freed with the pool), for one recording and submit.
+bool one_time_commands(VkDevice dev, uint32_t queue_family, const Reporter& report,
+                       DeviceHandle<VkCommandPool>& pool, VkCommandBuffer& commands) {
+    auto pool_info = vk_struct<VkCommandPoolCreateInfo>(VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO);
+    pool_info.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+    pool_info.queueFamilyIndex = queue_family;
+    VkCommandPool raw = VK_NULL_HANDLE;
+    if (!report.check(vkCreateCommandPool(dev, &pool_info, nullptr, &raw), "vkCreateCommandPool"))
+        return false;
+    pool = DeviceHandle<VkCommandPool>(dev, raw, vkDestroyCommandPool);
+    auto info =
+        vk_struct<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
+    info.commandPool = pool.get();
+    info.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    info.commandBufferCount = 1;
+    return report.check(vkAllocateCommandBuffers(dev, &info, &commands), "vkAllocateCommandBuffers");
+}
+
 struct InstanceOwner {
     VkInstance handle = VK_NULL_HANDLE;
     InstanceOwner() = default;
@@ -185,6 +224,29 @@ uint64_t hash_words(const std::vector<uint32_t>& words) {
     return h;
 }
 
+// The texture cache key: size and texel bits, a word at a time (entries keep the texels to
+// rule out clashes). Bits, not values: -0 and 0, or two NaNs, are different tables.
+uint64_t hash_texture(const Texture2D& t) {
+    uint64_t h = 1469598103934665603ull;
+    auto mix = [&h](uint64_t w) {
+        h ^= w;
+        h *= 1099511628211ull;
+        h ^= h >> 29;
+    };
+    mix((static_cast<uint64_t>(t.width) << 32) | t.height);
+    for (float f : t.rgba) {
+        uint32_t bits;
+        std::memcpy(&bits, &f, sizeof bits);
+        mix(bits);
+    }
+    return h;
+}
+
+bool same_texels(const std::vector<float>& a, const std::vector<float>& b) {
+    return a.size() == b.size() &&
+           (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0);
+}
+
 std::string icd_hint() {
     const char* icd = std::getenv("VK_ICD_FILENAMES");
     return std::string(
@@ -197,10 +259,31 @@ std::string icd_hint() {
 struct VulkanRunner::Impl {
     struct CachedPipeline {
         std::vector<uint32_t> words;
+        uint32_t textures = 0;  // the layout it was created with
         DeviceHandle<VkPipeline> pipeline;
     };
+    // Set 0 with bindings 0, 1 (storage buffers) and 2 .. 1 + textures (combined image samplers).
+    struct Layout {
+        DeviceHandle<VkDescriptorSetLayout> set;
+        DeviceHandle<VkPipelineLayout> pipeline;
+    };
+    // An uploaded table; memory declared first, so the view and image are destroyed before it.
+    struct CachedImage {
+        uint32_t width = 0, height = 0;
+        std::vector<float> rgba;  // the texels uploaded, to rule out hash clashes
+        DeviceHandle<VkDeviceMemory> memory;
+        DeviceHandle<VkImage> image;
+        DeviceHandle<VkImageView> view;
 
-    // Declaration order is destruction order reversed: pipelines, layouts, device, instance.
+        void abandon() {
+            view.abandon();
+            image.abandon();
+            memory.abandon();
+        }
+    };
+
+    // Declaration order is destruction order reversed: images, sampler, pipelines, layouts,
+    // device, instance.
     InstanceOwner instance;
     VkPhysicalDevice physical = VK_NULL_HANDLE;
     VkPhysicalDeviceProperties properties{};
@@ -208,26 +291,41 @@ struct VulkanRunner::Impl {
     DeviceOwner device;
     uint32_t queue_family = 0;
     bool float64 = false;  // shaderFloat64 supported and enabled
+    bool float16 = false;  // shaderFloat16 supported and enabled
     VkQueue queue = VK_NULL_HANDLE;
-    DeviceHandle<VkDescriptorSetLayout> set_layout;
-    DeviceHandle<VkPipelineLayout> pipeline_layout;
+    std::map<uint32_t, Layout> layouts;  // by texture count; 0 made at device creation
     std::unordered_map<uint64_t, CachedPipeline> pipelines;
+    DeviceHandle<VkSampler> sampler;  // the one sampler of every texture, made at first use
+    std::unordered_map<uint64_t, std::vector<std::unique_ptr<CachedImage>>> images;  // by content
+    std::size_t image_count = 0;
     // Set when a fence wait timed out: work may still be pending on the device, and destroying
     // objects in use is undefined (vkDestroy* valid usage), so everything is leaked instead.
     bool lost = false;
 
     ~Impl() {
         if (!lost) return;
+        for (auto& bucket : images)
+            for (auto& image : bucket.second) image->abandon();
+        sampler.abandon();
         for (auto& entry : pipelines) entry.second.pipeline.abandon();
-        pipeline_layout.abandon();
-        set_layout.abandon();
+        for (auto& entry : layouts) {
+            entry.second.pipeline.abandon();
+            entry.second.set.abandon();
+        }
         device.handle = VK_NULL_HANDLE;
         instance.handle = VK_NULL_HANDLE;
     }
 
     bool init_device(const Reporter& report);
-    const CachedPipeline* pipeline_for(const std::vector<uint32_t>& spirv, const Reporter& report);
-    bool create_buffer(VkDeviceSize size, HostBuffer& out, const Reporter& report) const;
+    const Layout* layout_for(uint32_t textures, const Reporter& report);
+    const CachedPipeline* pipeline_for(const std::vector<uint32_t>& spirv, uint32_t textures,
+                                       const Reporter& report);
+    bool create_buffer(VkDeviceSize size, VkBufferUsageFlags usage, HostBuffer& out,
+                       const Reporter& report) const;
+    bool make_sampler(const Reporter& report);
+    const CachedImage* image_for(const Texture2D& texture, const Reporter& report);
+    bool upload(const Texture2D& texture, CachedImage& image, const Reporter& report);
+    void trim_images(const std::vector<const CachedImage*>& keep);
 };
 
 namespace {
@@ -341,29 +439,77 @@ bool VulkanRunner::Impl::init_device(const Reporter& report) {
     device_info.queueCreateInfoCount = 1;
     device_info.pQueueCreateInfos = &queue_info;
     device_info.pEnabledFeatures = &enabled;
+
+    // fp16 variants (precision=fp16) need shaderFloat16: through VK_KHR_shader_float16_int8
+    // (the instance asks for Vulkan 1.1, where the feature is that extension's), enabled
+    // wherever the device offers it.
+    uint32_t extension_count = 0;
+    std::vector<VkExtensionProperties> extensions;
+    if (vkEnumerateDeviceExtensionProperties(physical, nullptr, &extension_count, nullptr) ==
+        VK_SUCCESS) {
+        extensions.resize(extension_count);
+        if (vkEnumerateDeviceExtensionProperties(physical, nullptr, &extension_count,
+                                                 extensions.data()) != VK_SUCCESS) {
+            extension_count = 0;
+        }
+        extensions.resize(extension_count);
+    }
+    const bool has_float16_extension =
+        std::any_of(extensions.begin(), extensions.end(), [](const VkExtensionProperties& e) {
+            return std::strcmp(e.extensionName, VK_KHR_SHADER_FLOAT16_INT8_EXTENSION_NAME) == 0;
+        });
+    auto float16_supported = vk_struct<VkPhysicalDeviceShaderFloat16Int8FeaturesKHR>(
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_FLOAT16_INT8_FEATURES_KHR);
+    if (has_float16_extension) {
+        auto features2 =
+            vk_struct<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2);
+        features2.pNext = &float16_supported;
+        vkGetPhysicalDeviceFeatures2(physical, &features2);
+    }
+    float16 = has_float16_extension && float16_supported.shaderFloat16 == VK_TRUE;
+    auto float16_enabled = vk_struct<VkPhysicalDeviceShaderFloat16Int8FeaturesKHR>(
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_FLOAT16_INT8_FEATURES_KHR);
+    const char* const float16_extension = VK_KHR_SHADER_FLOAT16_INT8_EXTENSION_NAME;
+    if (float16) {
+        float16_enabled.shaderFloat16 = VK_TRUE;
+        device_info.pNext = &float16_enabled;
+        device_info.enabledExtensionCount = 1;
+        device_info.ppEnabledExtensionNames = &float16_extension;
+    }
+
     if (!report.check(vkCreateDevice(physical, &device_info, nullptr, &device.handle),
                       "vkCreateDevice")) {
         return false;
     }
     vkGetDeviceQueue(device.handle, queue_family, 0, &queue);
+    return layout_for(0, report) != nullptr;
+}
 
-    VkDescriptorSetLayoutBinding bindings[2] = {};
-    for (uint32_t i = 0; i < 2; ++i) {
+const VulkanRunner::Impl::Layout* VulkanRunner::Impl::layout_for(uint32_t textures,
+                                                                 const Reporter& report) {
+    auto found = layouts.find(textures);
+    if (found != layouts.end()) return &found->second;
+
+    std::vector<VkDescriptorSetLayoutBinding> bindings(kFirstTextureBinding + textures);
+    for (uint32_t i = 0; i < bindings.size(); ++i) {
         bindings[i].binding = i;
-        bindings[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        bindings[i].descriptorType = i < kFirstTextureBinding
+                                         ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER
+                                         : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
         bindings[i].descriptorCount = 1;
         bindings[i].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
     }
     auto set_info = vk_struct<VkDescriptorSetLayoutCreateInfo>(
         VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
-    set_info.bindingCount = 2;
-    set_info.pBindings = bindings;
+    set_info.bindingCount = static_cast<uint32_t>(bindings.size());
+    set_info.pBindings = bindings.data();
     VkDescriptorSetLayout set = VK_NULL_HANDLE;
     if (!report.check(vkCreateDescriptorSetLayout(device.handle, &set_info, nullptr, &set),
                       "vkCreateDescriptorSetLayout")) {
-        return false;
+        return nullptr;
     }
-    set_layout = {device.handle, set, vkDestroyDescriptorSetLayout};
+    Layout layout;
+    layout.set = {device.handle, set, vkDestroyDescriptorSetLayout};
 
     const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(PushConstants)};
     auto layout_info =
@@ -372,20 +518,26 @@ bool VulkanRunner::Impl::init_device(const Reporter& report) {
     layout_info.pSetLayouts = &set;
     layout_info.pushConstantRangeCount = 1;
     layout_info.pPushConstantRanges = &push;
-    VkPipelineLayout layout = VK_NULL_HANDLE;
-    if (!report.check(vkCreatePipelineLayout(device.handle, &layout_info, nullptr, &layout),
+    VkPipelineLayout raw_layout = VK_NULL_HANDLE;
+    if (!report.check(vkCreatePipelineLayout(device.handle, &layout_info, nullptr, &raw_layout),
                       "vkCreatePipelineLayout")) {
-        return false;
+        return nullptr;
     }
-    pipeline_layout = {device.handle, layout, vkDestroyPipelineLayout};
-    return true;
+    layout.pipeline = {device.handle, raw_layout, vkDestroyPipelineLayout};
+    return &(layouts[textures] = std::move(layout));
 }
 
 const VulkanRunner::Impl::CachedPipeline* VulkanRunner::Impl::pipeline_for(
-    const std::vector<uint32_t>& spirv, const Reporter& report) {
-    const uint64_t key = hash_words(spirv);
+    const std::vector<uint32_t>& spirv, uint32_t textures, const Reporter& report) {
+    // One entry per (module, texture count): the layout is part of the pipeline.
+    const uint64_t key = hash_words(spirv) ^ (0x9e3779b97f4a7c15ull * (textures + 1ull));
     auto found = pipelines.find(key);
-    if (found != pipelines.end() && found->second.words == spirv) return &found->second;
+    if (found != pipelines.end() && found->second.textures == textures &&
+        found->second.words == spirv) {
+        return &found->second;
+    }
+    const Layout* layout = layout_for(textures, report);
+    if (!layout) return nullptr;
 
     auto module_info =
         vk_struct<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
@@ -405,7 +557,7 @@ const VulkanRunner::Impl::CachedPipeline* VulkanRunner::Impl::pipeline_for(
     pipeline_info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
     pipeline_info.stage.module = module.get();
     pipeline_info.stage.pName = "main";
-    pipeline_info.layout = pipeline_layout.get();
+    pipeline_info.layout = layout->pipeline.get();
     VkPipeline raw_pipeline = VK_NULL_HANDLE;
     if (!report.check(vkCreateComputePipelines(device.handle, VK_NULL_HANDLE, 1, &pipeline_info,
                                                nullptr, &raw_pipeline),
@@ -414,15 +566,16 @@ const VulkanRunner::Impl::CachedPipeline* VulkanRunner::Impl::pipeline_for(
     }
     CachedPipeline& entry = pipelines[key];
     entry.words = spirv;
+    entry.textures = textures;
     entry.pipeline = {device.handle, raw_pipeline, vkDestroyPipeline};
     return &entry;
 }
 
-bool VulkanRunner::Impl::create_buffer(VkDeviceSize size, HostBuffer& out,
+bool VulkanRunner::Impl::create_buffer(VkDeviceSize size, VkBufferUsageFlags usage, HostBuffer& out,
                                        const Reporter& report) const {
     auto buffer_info = vk_struct<VkBufferCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO);
     buffer_info.size = size;
-    buffer_info.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+    buffer_info.usage = usage;
     buffer_info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
     VkBuffer buffer = VK_NULL_HANDLE;
     if (!report.check(vkCreateBuffer(device.handle, &buffer_info, nullptr, &buffer),
@@ -448,7 +601,7 @@ bool VulkanRunner::Impl::create_buffer(VkDeviceSize size, HostBuffer& out,
         }
     }
     if (type == UINT32_MAX) {
-        return report.error("no HOST_VISIBLE | HOST_COHERENT memory type for a storage buffer");
+        return report.error("no HOST_VISIBLE | HOST_COHERENT memory type for a buffer");
     }
     auto alloc_info = vk_struct<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
     alloc_info.allocationSize = requirements.size;
@@ -462,6 +615,239 @@ bool VulkanRunner::Impl::create_buffer(VkDeviceSize size, HostBuffer& out,
     return report.check(vkBindBufferMemory(device.handle, buffer, memory, 0), "vkBindBufferMemory");
 }
 
+bool VulkanRunner::Impl::make_sampler(const Reporter& report) {
+    if (sampler.get() != VK_NULL_HANDLE) return true;
+    // Linear filtering of the format is optional (VkFormatProperties): without it the
+    // sampler's LINEAR filter would be invalid for these images.
+    VkFormatProperties format{};
+    vkGetPhysicalDeviceFormatProperties(physical, kTextureFormat, &format);
+    const VkFormatFeatureFlags needed = VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT |
+                                        VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT |
+                                        VK_FORMAT_FEATURE_TRANSFER_DST_BIT;
+    if ((format.optimalTilingFeatures & needed) != needed) {
+        return report.error(
+            "device '" + std::string(properties.deviceName) +
+            "' cannot sample R32G32B32A32_SFLOAT textures with linear filtering "
+            "(VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT | SAMPLED_IMAGE_FILTER_LINEAR_BIT | "
+            "TRANSFER_DST_BIT missing for optimal tiling), which the texture-sampling "
+            "variants (method=ltc) need");
+    }
+    auto info = vk_struct<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
+    info.magFilter = VK_FILTER_LINEAR;
+    info.minFilter = VK_FILTER_LINEAR;
+    info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    info.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    info.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    info.mipLodBias = 0.0f;
+    info.anisotropyEnable = VK_FALSE;
+    info.maxAnisotropy = 1.0f;
+    info.compareEnable = VK_FALSE;
+    info.minLod = 0.0f;
+    info.maxLod = 0.0f;  // one level
+    info.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
+    info.unnormalizedCoordinates = VK_FALSE;
+    VkSampler raw = VK_NULL_HANDLE;
+    if (!report.check(vkCreateSampler(device.handle, &info, nullptr, &raw), "vkCreateSampler")) {
+        return false;
+    }
+    sampler = {device.handle, raw, vkDestroySampler};
+    return true;
+}
+
+const VulkanRunner::Impl::CachedImage* VulkanRunner::Impl::image_for(const Texture2D& texture,
+                                                                     const Reporter& report) {
+    const uint64_t expected = static_cast<uint64_t>(texture.width) * texture.height * 4;
+    if (texture.width == 0 || texture.height == 0 || texture.rgba.size() != expected) {
+        report.error("texture of " + std::to_string(texture.width) + " x " +
+                     std::to_string(texture.height) + " texels has " +
+                     std::to_string(texture.rgba.size()) + " floats, not width * height * 4");
+        return nullptr;
+    }
+    const uint32_t limit = properties.limits.maxImageDimension2D;
+    if (texture.width > limit || texture.height > limit) {
+        report.error("texture of " + std::to_string(texture.width) + " x " +
+                     std::to_string(texture.height) + " texels exceeds maxImageDimension2D (" +
+                     std::to_string(limit) + ")");
+        return nullptr;
+    }
+    const uint64_t key = hash_texture(texture);
+    auto& bucket = images[key];
+    for (const auto& cached : bucket) {
+        if (cached->width == texture.width && cached->height == texture.height &&
+            same_texels(cached->rgba, texture.rgba)) {
+            return cached.get();
+        }
+    }
+    auto image = std::make_unique<CachedImage>();
+    if (!upload(texture, *image, report)) {
+        if (bucket.empty()) images.erase(key);
+        return nullptr;
+    }
+    bucket.push_back(std::move(image));
+    ++image_count;
+    return bucket.back().get();
+}
+
+bool VulkanRunner::Impl::upload(const Texture2D& texture, CachedImage& out,
+                                const Reporter& report) {
+    const VkDevice dev = device.handle;
+    out.width = texture.width;
+    out.height = texture.height;
+    out.rgba = texture.rgba;
+
+    auto image_info = vk_struct<VkImageCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO);
+    image_info.imageType = VK_IMAGE_TYPE_2D;
+    image_info.format = kTextureFormat;
+    image_info.extent = {texture.width, texture.height, 1};
+    image_info.mipLevels = 1;
+    image_info.arrayLayers = 1;
+    image_info.samples = VK_SAMPLE_COUNT_1_BIT;
+    image_info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    image_info.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    image_info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    image_info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    VkImage raw_image = VK_NULL_HANDLE;
+    if (!report.check(vkCreateImage(dev, &image_info, nullptr, &raw_image), "vkCreateImage")) {
+        return false;
+    }
+    DeviceHandle<VkImage> image(dev, raw_image, vkDestroyImage);
+    VkMemoryRequirements requirements;
+    vkGetImageMemoryRequirements(dev, raw_image, &requirements);
+    uint32_t type = UINT32_MAX;
+    for (const VkMemoryPropertyFlags wanted :
+         {VkMemoryPropertyFlags{VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT}, VkMemoryPropertyFlags{0}}) {
+        for (uint32_t i = 0; i < memory_properties.memoryTypeCount && type == UINT32_MAX; ++i) {
+            if ((requirements.memoryTypeBits & (1u << i)) &&
+                (memory_properties.memoryTypes[i].propertyFlags & wanted) == wanted) {
+                type = i;
+            }
+        }
+    }
+    if (type == UINT32_MAX) return report.error("no memory type for a sampled image");
+    auto alloc_info = vk_struct<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
+    alloc_info.allocationSize = requirements.size;
+    alloc_info.memoryTypeIndex = type;
+    VkDeviceMemory raw_memory = VK_NULL_HANDLE;
+    if (!report.check(vkAllocateMemory(dev, &alloc_info, nullptr, &raw_memory),
+                      "vkAllocateMemory")) {
+        return false;
+    }
+    out.memory = {dev, raw_memory, vkFreeMemory};
+    out.image = std::move(image);
+    if (!report.check(vkBindImageMemory(dev, raw_image, raw_memory, 0), "vkBindImageMemory")) {
+        return false;
+    }
+
+    HostBuffer staging;
+    if (!create_buffer(texture.bytes(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, staging, report)) {
+        return false;
+    }
+    void* mapped = nullptr;
+    if (!report.check(vkMapMemory(dev, staging.memory.get(), 0, VK_WHOLE_SIZE, 0, &mapped),
+                      "vkMapMemory")) {
+        return false;
+    }
+    std::memcpy(mapped, texture.rgba.data(), texture.bytes());
+    vkUnmapMemory(dev, staging.memory.get());
+
+    DeviceHandle<VkCommandPool> command_pool;
+    VkCommandBuffer commands = VK_NULL_HANDLE;  // freed with its pool
+    if (!one_time_commands(dev, queue_family, report, command_pool, commands)) return false;
+    auto begin = vk_struct<VkCommandBufferBeginInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO);
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    if (!report.check(vkBeginCommandBuffer(commands, &begin), "vkBeginCommandBuffer")) return false;
+    // UNDEFINED -> TRANSFER_DST, copy, TRANSFER_DST -> SHADER_READ_ONLY for compute reads.
+    auto barrier = vk_struct<VkImageMemoryBarrier>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER);
+    barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    barrier.image = raw_image;
+    barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    barrier.srcAccessMask = 0;
+    barrier.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    barrier.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    barrier.newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
+                         VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr, 1, &barrier);
+    VkBufferImageCopy region{};
+    region.bufferOffset = 0;
+    region.bufferRowLength = 0;  // tightly packed
+    region.bufferImageHeight = 0;
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageOffset = {0, 0, 0};
+    region.imageExtent = {texture.width, texture.height, 1};
+    vkCmdCopyBufferToImage(commands, staging.buffer.get(), raw_image,
+                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
+    barrier.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+    barrier.newLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 0, nullptr, 0, nullptr, 1,
+                         &barrier);
+    if (!report.check(vkEndCommandBuffer(commands), "vkEndCommandBuffer")) return false;
+
+    auto fence_info = vk_struct<VkFenceCreateInfo>(VK_STRUCTURE_TYPE_FENCE_CREATE_INFO);
+    VkFence raw_fence = VK_NULL_HANDLE;
+    if (!report.check(vkCreateFence(dev, &fence_info, nullptr, &raw_fence), "vkCreateFence")) {
+        return false;
+    }
+    DeviceHandle<VkFence> fence(dev, raw_fence, vkDestroyFence);
+    auto submit = vk_struct<VkSubmitInfo>(VK_STRUCTURE_TYPE_SUBMIT_INFO);
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &commands;
+    if (!report.check(vkQueueSubmit(queue, 1, &submit, fence.get()), "vkQueueSubmit")) {
+        return false;
+    }
+    const VkResult waited = vkWaitForFences(dev, 1, &raw_fence, VK_TRUE, kFenceTimeoutNs);
+    if (waited != VK_SUCCESS) {
+        // The copy may still be running: leak rather than destroy objects in use.
+        lost = true;
+        fence.abandon();
+        command_pool.abandon();
+        staging.abandon();
+        out.abandon();
+        if (waited == VK_TIMEOUT) {
+            return report.error("vkWaitForFences (texture upload) timed out after " +
+                                std::to_string(kFenceTimeoutNs / 1000000000) + " s");
+        }
+        return report.check(waited, "vkWaitForFences");
+    }
+
+    auto view_info = vk_struct<VkImageViewCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO);
+    view_info.image = raw_image;
+    view_info.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    view_info.format = kTextureFormat;
+    view_info.components = {VK_COMPONENT_SWIZZLE_IDENTITY, VK_COMPONENT_SWIZZLE_IDENTITY,
+                            VK_COMPONENT_SWIZZLE_IDENTITY, VK_COMPONENT_SWIZZLE_IDENTITY};
+    view_info.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    VkImageView raw_view = VK_NULL_HANDLE;
+    if (!report.check(vkCreateImageView(dev, &view_info, nullptr, &raw_view),
+                      "vkCreateImageView")) {
+        return false;
+    }
+    out.view = {dev, raw_view, vkDestroyImageView};
+    return true;
+}
+
+// Bounds the cache: past kMaxCachedImages, every image the current run does not bind is
+// destroyed (earlier runs have finished: each waits for its fence).
+void VulkanRunner::Impl::trim_images(const std::vector<const CachedImage*>& keep) {
+    if (image_count <= kMaxCachedImages) return;
+    for (auto bucket = images.begin(); bucket != images.end();) {
+        auto& list = bucket->second;
+        for (auto it = list.begin(); it != list.end();) {
+            if (std::find(keep.begin(), keep.end(), it->get()) == keep.end()) {
+                it = list.erase(it);
+                --image_count;
+            } else {
+                ++it;
+            }
+        }
+        bucket = list.empty() ? images.erase(bucket) : std::next(bucket);
+    }
+}
+
 VulkanRunner::VulkanRunner(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 VulkanRunner::~VulkanRunner() = default;
 
@@ -469,10 +855,14 @@ std::string VulkanRunner::device_name() const {
     return impl_->properties.deviceName;
 }
 
+bool VulkanRunner::supports_float16() const {
+    return impl_->float16;
+}
+
 bool VulkanRunner::run(const std::vector<uint32_t>& spirv, const void* input,
                        std::size_t input_bytes, std::size_t count, std::vector<float>& output,
                        std::size_t output_floats_per_item, const DiagnosticConsumer& diag,
-                       double* seconds) {
+                       double* seconds, const std::vector<const Texture2D*>& textures) {
     const Reporter report(diag);
     Impl& m = *impl_;
     const VkDevice device = m.device.handle;
@@ -480,10 +870,30 @@ bool VulkanRunner::run(const std::vector<uint32_t>& spirv, const void* input,
     if (spirv.size() < 5 || spirv[0] != kSpirvMagic) {
         return report.error("run: not a SPIR-V module (missing magic number)");
     }
-    if (spirv_declares_capability(spirv, kCapabilityFloat64) && !m.float64) {
+    const SpirvFacts facts = scan_spirv(spirv);
+    if (facts.float64 && !m.float64) {
         return report.error("device '" + std::string(m.properties.deviceName) +
                             "' lacks shaderFloat64, which this shader needs (an fp64 variant: "
                             "choose precision=fp32)");
+    }
+    if (facts.float16 && !m.float16) {
+        return report.error("device '" + std::string(m.properties.deviceName) +
+                            "' lacks shaderFloat16 (VK_KHR_shader_float16_int8), which this "
+                            "shader needs (an fp16 variant: choose precision=fp32)");
+    }
+    if (facts.max_binding >= static_cast<int64_t>(kFirstTextureBinding + textures.size())) {
+        return report.error("run: the shader declares binding " +
+                            std::to_string(facts.max_binding) + " but " +
+                            std::to_string(textures.size()) +
+                            " texture(s) were given (texture k is binding 2 + k)");
+    }
+    if (textures.size() > m.properties.limits.maxPerStageDescriptorSampledImages ||
+        textures.size() > m.properties.limits.maxPerStageDescriptorSamplers) {
+        return report.error("run: " + std::to_string(textures.size()) +
+                            " textures exceed the device's per-stage sampler limit");
+    }
+    for (std::size_t k = 0; k < textures.size(); ++k) {
+        if (!textures[k]) return report.error("run: texture " + std::to_string(k) + " is null");
     }
     if (input_bytes > 0 && input == nullptr) return report.error("run: input is null");
     if (count > std::numeric_limits<uint32_t>::max()) {
@@ -501,8 +911,19 @@ bool VulkanRunner::run(const std::vector<uint32_t>& spirv, const void* input,
                             std::to_string(range_limit) + " bytes); split the input");
     }
 
-    const Impl::CachedPipeline* pipeline = m.pipeline_for(spirv, report);
+    const uint32_t texture_count = static_cast<uint32_t>(textures.size());
+    const Impl::CachedPipeline* pipeline = m.pipeline_for(spirv, texture_count, report);
     if (!pipeline) return false;
+    const Impl::Layout* layout = m.layout_for(texture_count, report);
+    if (!layout) return false;
+    // Tables first (cached, each uploaded once and waited for): not part of `seconds`.
+    std::vector<const Impl::CachedImage*> images;
+    if (texture_count > 0 && !m.make_sampler(report)) return false;
+    for (const Texture2D* t : textures) {
+        images.push_back(m.image_for(*t, report));
+        if (!images.back()) return false;
+    }
+    m.trim_images(images);
     if (count == 0) {
         output.clear();
         if (seconds) *seconds = 0.0;
@@ -512,8 +933,10 @@ bool VulkanRunner::run(const std::vector<uint32_t>& spirv, const void* input,
     // Zero-sized buffers are invalid (VkBufferCreateInfo valid usage), so keep one word at least.
     HostBuffer in_buffer, out_buffer;
     const VkDeviceSize out_bytes = output_floats * sizeof(float);
-    if (!m.create_buffer(std::max<VkDeviceSize>(input_bytes, 4), in_buffer, report) ||
-        !m.create_buffer(std::max<VkDeviceSize>(out_bytes, 4), out_buffer, report)) {
+    if (!m.create_buffer(std::max<VkDeviceSize>(input_bytes, 4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                         in_buffer, report) ||
+        !m.create_buffer(std::max<VkDeviceSize>(out_bytes, 4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                         out_buffer, report)) {
         return false;
     }
 
@@ -535,20 +958,22 @@ bool VulkanRunner::run(const std::vector<uint32_t>& spirv, const void* input,
                 std::numeric_limits<float>::quiet_NaN());
     vkUnmapMemory(device, out_buffer.memory.get());
 
-    // Descriptors: binding 0 = input, binding 1 = output.
-    const VkDescriptorPoolSize pool_size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2};
+    // Descriptors: binding 0 = input, binding 1 = output, 2 + k = textures[k].
+    VkDescriptorPoolSize pool_sizes[2] = {
+        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2},
+        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, texture_count}};
     auto pool_info =
         vk_struct<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
     pool_info.maxSets = 1;
-    pool_info.poolSizeCount = 1;
-    pool_info.pPoolSizes = &pool_size;
+    pool_info.poolSizeCount = texture_count > 0 ? 2 : 1;
+    pool_info.pPoolSizes = pool_sizes;
     VkDescriptorPool raw_pool = VK_NULL_HANDLE;
     if (!report.check(vkCreateDescriptorPool(device, &pool_info, nullptr, &raw_pool),
                       "vkCreateDescriptorPool")) {
         return false;
     }
     DeviceHandle<VkDescriptorPool> descriptor_pool(device, raw_pool, vkDestroyDescriptorPool);
-    const VkDescriptorSetLayout set_layout = m.set_layout.get();
+    const VkDescriptorSetLayout set_layout = layout->set.get();
     auto set_info =
         vk_struct<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
     set_info.descriptorPool = descriptor_pool.get();
@@ -563,44 +988,37 @@ bool VulkanRunner::run(const std::vector<uint32_t>& spirv, const void* input,
         {in_buffer.buffer.get(), 0, VK_WHOLE_SIZE},
         {out_buffer.buffer.get(), 0, VK_WHOLE_SIZE},
     };
-    VkWriteDescriptorSet writes[2] = {};
-    for (uint32_t i = 0; i < 2; ++i) {
-        writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+    std::vector<VkDescriptorImageInfo> image_infos(texture_count);
+    for (uint32_t k = 0; k < texture_count; ++k) {
+        image_infos[k] = {m.sampler.get(), images[k]->view.get(),
+                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    }
+    std::vector<VkWriteDescriptorSet> writes(kFirstTextureBinding + texture_count);
+    for (uint32_t i = 0; i < writes.size(); ++i) {
+        writes[i] = vk_struct<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
         writes[i].dstSet = set;
         writes[i].dstBinding = i;
         writes[i].descriptorCount = 1;
-        writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-        writes[i].pBufferInfo = &buffer_infos[i];
+        if (i < kFirstTextureBinding) {
+            writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+            writes[i].pBufferInfo = &buffer_infos[i];
+        } else {
+            writes[i].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+            writes[i].pImageInfo = &image_infos[i - kFirstTextureBinding];
+        }
     }
-    vkUpdateDescriptorSets(device, 2, writes, 0, nullptr);
+    vkUpdateDescriptorSets(device, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
 
-    auto command_pool_info =
-        vk_struct<VkCommandPoolCreateInfo>(VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO);
-    command_pool_info.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
-    command_pool_info.queueFamilyIndex = m.queue_family;
-    VkCommandPool raw_command_pool = VK_NULL_HANDLE;
-    if (!report.check(vkCreateCommandPool(device, &command_pool_info, nullptr, &raw_command_pool),
-                      "vkCreateCommandPool")) {
-        return false;
-    }
-    DeviceHandle<VkCommandPool> command_pool(device, raw_command_pool, vkDestroyCommandPool);
-    auto command_info =
-        vk_struct<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
-    command_info.commandPool = command_pool.get();
-    command_info.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    command_info.commandBufferCount = 1;
+    DeviceHandle<VkCommandPool> command_pool;
     VkCommandBuffer commands = VK_NULL_HANDLE;  // freed with its pool
-    if (!report.check(vkAllocateCommandBuffers(device, &command_info, &commands),
-                      "vkAllocateCommandBuffers")) {
-        return false;
-    }
+    if (!one_time_commands(device, m.queue_family, report, command_pool, commands)) return false;
 
     // Record: one dispatch per batch, each batch told its first item through `base`.
     auto begin = vk_struct<VkCommandBufferBeginInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO);
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     if (!report.check(vkBeginCommandBuffer(commands, &begin), "vkBeginCommandBuffer")) return false;
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline->pipeline.get());
-    vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, m.pipeline_layout.get(), 0, 1,
+    vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, layout->pipeline.get(), 0, 1,
                             &set, 0, nullptr);
     const uint64_t max_groups =
         std::min<uint64_t>(m.properties.limits.maxComputeWorkGroupCount[0], 65535);
@@ -608,7 +1026,7 @@ bool VulkanRunner::run(const std::vector<uint32_t>& spirv, const void* input,
     for (uint64_t base = 0; base < count; base += batch_items) {
         const uint64_t items = std::min<uint64_t>(batch_items, count - base);
         const PushConstants push{static_cast<uint32_t>(count), static_cast<uint32_t>(base)};
-        vkCmdPushConstants(commands, m.pipeline_layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
+        vkCmdPushConstants(commands, layout->pipeline.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
                            sizeof(push), &push);
         vkCmdDispatch(commands, static_cast<uint32_t>((items + kLocalSizeX - 1) / kLocalSizeX), 1,
                       1);

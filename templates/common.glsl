@@ -82,11 +82,14 @@ real al_atan_unit(real t) {
     return t < AL_R(0.0) ? -(base + p) : base + p;
 }
 
-// atan2(y, x) in (-pi, pi], 0 for (0, 0). Error a few ulp (al_atan_unit).
+// atan2(y, x) in (-pi, pi], 0 for (0, 0). Error a few ulp (al_atan_unit). One
+// quotient and one series: SIMD drivers (lavapipe) would run both arms of a
+// conditional call.
 real al_atan2(real y, real x) {
     real ax = abs(x), ay = abs(y);
     if (ax == AL_R(0.0) && ay == AL_R(0.0)) return AL_R(0.0);
-    real r = ay <= ax ? al_atan_unit(ay / ax) : AL_HALF_PI - al_atan_unit(ax / ay);
+    real a = al_atan_unit(min(ax, ay) / max(ax, ay));
+    real r = ay <= ax ? a : AL_HALF_PI - a;
     if (x < AL_R(0.0)) r = AL_PI - r;
     return y < AL_R(0.0) ? -r : r;
 }

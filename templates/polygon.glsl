@@ -35,7 +35,7 @@ rvec3 al_crossing(rvec3 a, rvec3 b, real da, real db) {
     return normalize((da * b - db * a) / (da - db));
 }
 
-#ifndef AL_METHOD_POINT
+#if !defined(AL_METHOD_POINT) && !defined(AL_METHOD_LTC)
 // Streams the arcs of D = light ∩ {n.w >= 0} ∩ {axis.w >= 0} into the method's
 // accumulator M (al_moments_arc) and returns the irradiance / pi of light ∩ {n.w >= 0}
 // (Lambert: sum arc_i (n.m_i) / (2 pi), exact). Without clip_axis, D = light ∩

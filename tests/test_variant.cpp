@@ -109,9 +109,13 @@ TEST_CASE("enumeration: every variant valid, unique, and round-trips", "[variant
     // blinn, beckmann, ggx x lorentz, pearson, ellipsoid: split single, halved x factor
     // closest, blend; one shape, fit=tuned.
     const std::size_t microfacet_peak_polygon = 3 * 3 * 2 * 2;
+    // phong, blinn, beckmann, ggx x ltc: precision fp32, fp16 x horizon clip, proxy x
+    // edge acos, poly; one shape.
+    const std::size_t ltc_polygon = 4 * 2 * 2 * 2;
     INFO("enumerated " << all.size());
     CHECK(all.size() == phong_exact_polygon + phong_arvo_polygon + phong_peak_polygon +
-                            phong_point_polygon + microfacet_polygon + microfacet_peak_polygon);
+                            phong_point_polygon + microfacet_polygon + microfacet_peak_polygon +
+                            ltc_polygon);
 
     std::set<std::string> names;
     for (const auto& v : all) {
@@ -131,7 +135,8 @@ TEST_CASE("enumeration: every variant valid, unique, and round-trips", "[variant
     CHECK(canonical_name(all[1]) ==
           "dist=phong,method=exact,light=polygon,verts=3,nodes=8,precision=fp32");
     CHECK(canonical_name(all[2]) == "dist=phong,method=exact,light=polygon,verts=3,nodes=12");
-    CHECK(canonical_name(all.back()) == "dist=ggx,method=ellipsoid,light=polygon");
+    CHECK(canonical_name(all.back()) ==
+          "dist=ggx,method=ltc,light=polygon,precision=fp16,horizon=proxy,edge=poly");
     CHECK(enumerate_variants() == all);
 }
 
@@ -209,11 +214,37 @@ TEST_CASE("precision: fp64 by default for method=exact, fp32 for the rest", "[va
           "dist=phong,method=exact,light=polygon");
     const Variant p = parse_ok("dist=phong,method=point,light=polygon");
     CHECK(effective_precision(p) == Precision::Fp32);
-    CHECK_THAT(
-        error_of("dist=phong,method=exact,light=polygon,precision=fp16"),
-        Catch::Matchers::Contains("key 'precision': unknown value 'fp16' (expected fp64, fp32)"));
+    CHECK_THAT(error_of("dist=phong,method=exact,light=polygon,precision=fp16"),
+               Catch::Matchers::Contains("key 'precision': value 'fp16' is not offered for "
+                                         "dist=phong,method=exact,light=polygon (expected fp64, "
+                                         "fp32)"));
+    CHECK_THAT(error_of("dist=phong,method=exact,light=polygon,precision=fp8"),
+               Catch::Matchers::Contains(
+                   "key 'precision': unknown value 'fp8' (expected fp64, fp32, fp16)"));
     CHECK_THAT(error_of("dist=phong,method=point,light=polygon,precision=fp32"),
-               Catch::Matchers::Contains("key 'precision' applies to method=exact only"));
+               Catch::Matchers::Contains("key 'precision' applies to method=exact, ltc only"));
+}
+
+TEST_CASE("precision: a family's own default (ltc: fp32, offers fp16)", "[variant]") {
+    // The key's default is fp64, which ltc does not offer: its row names fp32 instead.
+    const Variant d = parse_ok("dist=ggx,method=ltc,light=polygon");
+    CHECK(d.precision == Precision::Fp32);
+    CHECK(effective_precision(d) == Precision::Fp32);
+    CHECK(is_valid(d));
+    CHECK(canonical_name(d) == "dist=ggx,method=ltc,light=polygon");
+    CHECK(parse_ok("dist=ggx,method=ltc,light=polygon,precision=fp32") == d);
+    const Variant h = parse_ok("dist=ggx,method=ltc,light=polygon,precision=fp16");
+    CHECK(h.precision == Precision::Fp16);
+    CHECK(canonical_name(h) == "dist=ggx,method=ltc,light=polygon,precision=fp16");
+    CHECK(variant_matches(d, "precision=fp32"));
+    CHECK(variant_matches(h, "precision=fp16"));
+    CHECK_THAT(error_of("dist=ggx,method=ltc,light=polygon,precision=fp64"),
+               Catch::Matchers::Contains("key 'precision': value 'fp64' is not offered for "
+                                         "dist=ggx,method=ltc,light=polygon (expected fp32, "
+                                         "fp16)"));
+    Variant raw = d;
+    raw.precision = Precision::Fp64;  // the key's default is not this family's
+    CHECK_FALSE(is_valid(raw));
 }
 
 TEST_CASE("bad variant names are rejected naming the key", "[variant]") {
@@ -226,7 +257,7 @@ TEST_CASE("bad variant names are rejected naming the key", "[variant]") {
     CHECK_THAT(
         error_of("dist=phong,method=ltcx,light=polygon"),
         Contains("key 'method': unknown value 'ltcx' (expected exact, arvo, lorentz, pearson, "
-                 "ellipsoid, point)"));
+                 "ellipsoid, ltc, point)"));
     CHECK_THAT(error_of("dist=phong,method=exact,light=quad"),
                Contains("key 'light': unknown value 'quad' (expected polygon, disk, sphere, "
                         "ellipsoid)"));
@@ -393,7 +424,9 @@ TEST_CASE("key table: names in canonical order, required keys, defaults, docs", 
     CHECK(scope("sided").empty());
     CHECK(scope("verts") == "light=polygon");
     CHECK(scope("nodes") == "method=exact");
-    CHECK(scope("precision") == "method=exact");
+    CHECK(scope("precision") == "method=exact, ltc");
+    CHECK(scope("horizon") == "method=ltc");
+    CHECK(scope("edge") == "method=ltc");
     CHECK(scope("fit") == "method=lorentz, pearson, ellipsoid");
     CHECK(scope("specular") == "dist=phong and method=lorentz, pearson, ellipsoid");
     CHECK(scope("split") == "dist=blinn, beckmann, ggx and method=lorentz, pearson, ellipsoid");
@@ -430,7 +463,10 @@ TEST_CASE("family table: every family's keys and values are the key table's", "[
                 while (at < k->values.size() && k->values[at] != x) ++at;
                 CHECK(at < k->values.size());
             }
-            CHECK(std::count(fk.values.begin(), fk.values.end(), k->default_value) == 1);
+            // Its default: the key's, or the row's own, offered once.
+            const std::string fallback = fk.default_value.empty() ? k->default_value
+                                                                  : fk.default_value;
+            CHECK(std::count(fk.values.begin(), fk.values.end(), fallback) == 1);
         }
     }
     // A (dist, method, light) with no row has no variant.
@@ -494,7 +530,8 @@ TEST_CASE("every value of every key parses, names, matches and is enumerated", "
                 CHECK(enumerated.count(canonical_name(v)) == 1);
                 // The default is dropped from the name; any other value is named, and
                 // makes a different variant (operator== sees the field).
-                const bool is_default = value == k.default_value;
+                const bool is_default =
+                    value == (fk->default_value.empty() ? k.default_value : fk->default_value);
                 CHECK((canonical_name(v) == base) == is_default);
                 CHECK((v == bare) == is_default);
                 if (!is_default) {

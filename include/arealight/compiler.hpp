@@ -27,6 +27,9 @@ std::optional<std::vector<uint32_t>> compile_glsl(const std::string& source,
 
 // Number of instructions after the 5-word header; stops at the first malformed word count.
 std::size_t spirv_instruction_count(const std::vector<uint32_t>& spirv);
+// Image reads (sample, fetch, gather; SPIR-V 3.37.10) in a module: texture fetches per
+// shading point of a shader whose reads sit outside loops (the LTC tables).
+std::size_t spirv_texture_sample_count(const std::vector<uint32_t>& spirv);
 
 // SPIRV-Tools assembly text with friendly names; empty when the binary cannot be parsed.
 std::string disassemble(const std::vector<uint32_t>& spirv);

@@ -6,15 +6,23 @@
 #include <string>
 #include <vector>
 
+#include "arealight/texture.hpp"
+
 namespace arealight {
 
 // Shades `count` packed cases (the AlCase layout of templates/common.glsl) into
-// 4 floats each, exactly as the shader's main() does.
-using MirrorFn = void (*)(const void* cases, float* results, std::size_t count);
+// 4 floats each, exactly as the shader's main() does. textures[k] is the table the
+// variant's k-th sampler reads (VariantFamily::samplers, the Vulkan run's binding
+// 2 + k; variant_textures() in include/arealight/evaluator.hpp gives them); a sampler
+// without one (k >= texture_count) reads NaN. The samplers are thread_local: one run
+// per thread at a time, and the textures must outlive the call.
+using MirrorFn = void (*)(const void* cases, float* results, std::size_t count,
+                          const Texture2D* const* textures, std::size_t texture_count);
 
 struct MirrorEntry {
     const char* variant;  // canonical name
     MirrorFn run;
+    std::size_t samplers;  // how many textures run() reads
 };
 
 // Every variant compiled into this binary, in enumerate_variants() order.
@@ -22,6 +30,7 @@ const std::vector<MirrorEntry>& mirror_registry();
 
 // nullptr when the variant has no mirror in this build.
 MirrorFn find_mirror(const std::string& canonical_variant);
+const MirrorEntry* find_mirror_entry(const std::string& canonical_variant);
 
 // One peak-function edge integral of a variant's mirror (a test hook): the fit of
 // the near-form integrand (1 - x^k) / (1 - x^2) (far_edge false) or of

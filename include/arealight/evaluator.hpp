@@ -11,6 +11,7 @@
 #include "arealight/case.hpp"
 #include "arealight/diagnostics.hpp"
 #include "arealight/results.hpp"
+#include "arealight/texture.hpp"
 #include "arealight/variant.hpp"
 
 namespace arealight {
@@ -64,6 +65,15 @@ class Evaluator {
     explicit Evaluator(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> impl_;
 };
+
+// The tables the variant's shader samples, in binding order (texture k: set 0,
+// binding 2 + k on Vulkan; the mirror's k-th sampler): for the families whose
+// samplers are {"al_ltc_matrix", "al_ltc_amplitude"} (method=ltc),
+// &builtin_ltc_textures(v.dist)[0] and [1], which live for the program; empty for a
+// family without samplers. Throws std::invalid_argument, naming the variant and the
+// sampler, for a sampler name it has no table for. Evaluator::run and run_packed bind
+// these on both backends.
+std::vector<const Texture2D*> variant_textures(const Variant& v);
 
 // GLSL -> validated (optimized) SPIR-V for a variant; compiler messages are
 // prefixed with the variant's name.

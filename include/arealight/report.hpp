@@ -87,6 +87,9 @@ struct ReportRow {
     double value = 0;       // sweep: the axis value of this row; 0 in a report
     std::size_t cases = 0;  // cases it applies to
     std::size_t spirv_instructions = 0, x86_instructions = 0;
+    // Tables the variant samples (bytes uploaded) and image reads in its SPIR-V (per
+    // shading point: no read sits in a loop).
+    std::size_t table_bytes = 0, texture_fetches = 0;
     double ns_per_case = 0;  // median over repeats
     double ratio = 0;        // ns_per_case / the baseline's, same run
     std::vector<QuantityScore> scores;

@@ -15,8 +15,10 @@ namespace arealight {
 
 // exact: in-shader accuracy reference (quadrature); arvo: Arvo's O(N) recurrence
 // for integer exponents (the paper's reference cost); lorentz, pearson, ellipsoid:
-// seed 000's O(1) peak functions; point: the point-light baseline of every speed ratio.
-enum class Method { Exact, Arvo, Lorentz, Pearson, Ellipsoid, Point };
+// seed 000's O(1) peak functions; ltc: linearly transformed cosines (Heitz et al.
+// 2016, seed 001) with arealight's own fitted tables; point: the point-light
+// baseline of every speed ratio.
+enum class Method { Exact, Arvo, Lorentz, Pearson, Ellipsoid, Ltc, Point };
 // Peak-function fitting recipe: tuned (default: fit points, shape parameters and
 // near/far forms of our own, templates/method_peak_phong.glsl) or paper (seed 000
 // eq. 7, 13-14, 17-18 as printed, parity labels corrected).
@@ -29,8 +31,9 @@ enum class SpecularForm { TwoAxis, Sg };
 enum class Sided { Any, One, Two };
 // Arithmetic precision of the shader math. method=exact, the in-shader accuracy
 // reference, defaults to fp64 (fp32 input rounding then dominates its error) and
-// offers fp32; every other method is fp32 only for now.
-enum class Precision { Fp32, Fp64 };
+// offers fp32; method=ltc defaults to fp32 and offers fp16 (seed 001: the edge
+// integrals and the horizon in half precision); every other method is fp32 only.
+enum class Precision { Fp32, Fp64, Fp16 };
 // Microfacet peak methods (templates/method_peak_microfacet.glsl): how each edge of the
 // lit region is split before its points are mapped to half vectors: none, single
 // (seed 000 Algorithm 1: at the foot of r, where it lies inside the edge) or halved
@@ -41,6 +44,14 @@ enum class Split { None, Single, Halved };
 // blend (that point blended with the half vector of the lit region's vector
 // irradiance by the light's solid angle against the lobe's).
 enum class Factor { Closest, Blend };
+// method=ltc: how the transformed polygon meets the horizon: clip (exactly, before
+// the edge integrals) or proxy (seed 001: no clipping; the unclipped vector form
+// factor's length and direction give a sphere whose clipped form factor is read
+// from a table).
+enum class Horizon { Clip, Proxy };
+// method=ltc: the edge integral's theta / sin(theta) by acos (exact) or by a
+// polynomial in cos(theta) (seed 001, fp16-friendly).
+enum class Edge { Acos, Poly };
 
 // One shader variant. Each key of the key table (variant_keys()) is a typed field
 // here, initialised to the key's default; which keys a variant uses, and which of
@@ -58,6 +69,8 @@ struct Variant {
     int radial = 16;  // exact microfacets: radial Gauss-Legendre nodes of the specular rule
     Split split = Split::Halved;     // microfacet peak methods
     Factor factor = Factor::Blend;   // microfacet peak methods
+    Horizon horizon = Horizon::Clip;  // method=ltc
+    Edge edge = Edge::Acos;           // method=ltc
 
     // Equal when every key of the key table has the same value (a field that no
     // key row reads would not count: each field is a row).
@@ -72,6 +85,8 @@ const char* to_string(Fit f);
 const char* to_string(SpecularForm s);
 const char* to_string(Split s);
 const char* to_string(Factor f);
+const char* to_string(Horizon h);
+const char* to_string(Edge e);
 
 // Whether the method is one of seed 000's peak functions (keys fit, specular).
 bool is_peak_method(Method m);
@@ -131,10 +146,14 @@ const std::vector<KeyInfo>& variant_keys();
 // and (GLSL only) templates/entry.glsl, as names inside templates/.
 struct FamilyKey {
     // In the table, {} stands for every value of the key; variant_families() lists them.
-    FamilyKey(std::string key, std::vector<std::string> values = {})
-        : key(std::move(key)), values(std::move(values)) {}
+    // default_value: the family's own default where the key's (KeyInfo) is not one it
+    // offers (method=ltc's precision is fp32, not fp64); empty: the key's.
+    FamilyKey(std::string key, std::vector<std::string> values = {},
+              std::string default_value = {})
+        : key(std::move(key)), values(std::move(values)), default_value(std::move(default_value)) {}
     std::string key;
     std::vector<std::string> values;
+    std::string default_value;
 };
 struct VariantFamily {
     Distribution dist;
@@ -142,6 +161,13 @@ struct VariantFamily {
     LightType light;
     std::vector<FamilyKey> keys;
     std::vector<std::string> templates;
+    // Tables the shader samples, in binding order from binding 2: sampler names as
+    // the templates spell them. The stitcher declares them (GLSL: sampler2D uniforms;
+    // C++: the mirror's samplers), the evaluator binds variant_textures().
+    std::vector<std::string> samplers = {};
+    // Whether the shader returns the quantity beside specular (ndf for microfacets,
+    // moment for phong; CONTRACT.md 2): the point baselines and ltc do not.
+    bool second_quantity = true;
 };
 
 const std::vector<VariantFamily>& variant_families();

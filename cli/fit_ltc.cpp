@@ -1,0 +1,82 @@
+#include "fit_ltc.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+
+#include "arealight/atomic_file.hpp"
+#include "arealight/ltc_table.hpp"
+
+namespace arealight::cli {
+
+namespace {
+
+void print_diagnostic(const Diagnostic& d) {
+    if (d.severity == Severity::Error) {
+        std::fprintf(stderr, "arealight: error: %s\n", d.message.c_str());
+    } else {
+        std::fprintf(stderr, "arealight: %s: %s\n", to_string(d.severity), d.message.c_str());
+    }
+}
+
+Distribution distribution_of(const std::string& s) {
+    for (Distribution d : {Distribution::Phong, Distribution::Blinn, Distribution::Beckmann,
+                           Distribution::Ggx}) {
+        if (s == to_string(d)) return d;
+    }
+    return Distribution::Ggx;  // unreachable: CLI11 checks the name
+}
+
+}  // namespace
+
+CLI::App* add_fit_ltc_command(CLI::App& app, FitLtcArgs& args) {
+    auto* cmd = app.add_subcommand(
+        "fit-ltc",
+        "Fit a distribution's linearly transformed cosines table (data/ltc/ltc_DIST.txt): "
+        "Nelder-Mead per (roughness, view) cell, each from its neighbour's solution");
+    cmd->add_option("--dist", args.dist, "phong, blinn, beckmann or ggx")
+        ->required()
+        ->check(CLI::IsMember({"phong", "blinn", "beckmann", "ggx"}));
+    cmd->add_option("--size", args.size, "cells per axis")
+        ->check(CLI::Range(2, 1024))
+        ->capture_default_str();
+    cmd->add_option("--threads", args.threads,
+                    "worker threads (0: all cores); the table does not depend on it")
+        ->check(CLI::Range(0u, 256u))
+        ->capture_default_str();
+    cmd->add_option("--out", args.out, "table file to write")->required();
+    return cmd;
+}
+
+int run_fit_ltc(const FitLtcArgs& args) {
+    const Distribution d = distribution_of(args.dist);
+    LtcFitOptions opt;
+    opt.size = args.size;
+    opt.threads = static_cast<int>(args.threads);
+    const auto start = std::chrono::steady_clock::now();
+    const bool live = isatty(fileno(stderr)) != 0;
+    auto last = start;
+    opt.progress = [&](int done, int total) {
+        const auto now = std::chrono::steady_clock::now();
+        if (done != total && now - last < std::chrono::milliseconds(live ? 250 : 5000)) return;
+        last = now;
+        std::fprintf(stderr, "%sfit-ltc %s: %d/%d cells, %.1f s%s", live ? "\r" : "",
+                     args.dist.c_str(), done, total,
+                     std::chrono::duration<double>(now - start).count(),
+                     live && done != total ? "" : "\n");
+        std::fflush(stderr);
+    };
+    auto table = fit_ltc(d, opt, print_diagnostic);
+    if (!table) return 3;
+    table->command = "arealight fit-ltc --dist " + args.dist + " --size " +
+                     std::to_string(args.size) + " --out " + args.out;
+    if (!write_file_atomic(args.out, format_ltc_table(*table), print_diagnostic)) return 3;
+    std::fprintf(stderr, "fit-ltc %s: %dx%d cells in %.1f s; wrote %s\n", args.dist.c_str(),
+                 args.size, args.size,
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                 args.out.c_str());
+    return 0;
+}
+
+}  // namespace arealight::cli

@@ -1,0 +1,34 @@
+// The tables a variant samples (VariantFamily::samplers), by sampler name.
+#include <stdexcept>
+#include <string>
+
+#include "arealight/evaluator.hpp"
+#include "arealight/ltc_table.hpp"
+
+namespace arealight {
+
+std::vector<const Texture2D*> variant_textures(const Variant& v) {
+    std::vector<const Texture2D*> out;
+    const VariantFamily* family = find_family(v);
+    if (!family) return out;
+    for (const auto& name : family->samplers) {
+        // The LTC tables (include/arealight/ltc_table.hpp): matrix, then amplitude.
+        if (name == "al_ltc_matrix" || name == "al_ltc_amplitude") {
+            const auto& ltc = builtin_ltc_textures(v.dist);
+            const std::size_t k = name == "al_ltc_matrix" ? 0 : 1;
+            if (ltc.size() <= k) {
+                throw std::runtime_error("variant " + canonical_name(v) + ": the builtin LTC " +
+                                         "tables of dist=" + to_string(v.dist) + " have " +
+                                         std::to_string(ltc.size()) + " textures, not 2");
+            }
+            out.push_back(&ltc[k]);
+            continue;
+        }
+        throw std::invalid_argument("variant " + canonical_name(v) + ": sampler '" + name +
+                                    "' has no table (runtime/variant_textures.cpp knows "
+                                    "al_ltc_matrix and al_ltc_amplitude)");
+    }
+    return out;
+}
+
+}  // namespace arealight

@@ -1,0 +1,274 @@
+// Linearly transformed cosines (Heitz, Dupuy, Hill, Neubelt 2016; seed 001) for
+// polygon lights, with arealight's own fitted tables (data/ltc/, `arealight fit-ltc`,
+// conventions in include/arealight/ltc_table.hpp). The BRDF lobe f (n.w) of a view
+// and roughness is approximated by a clamped cosine seen through a 3x3 matrix M:
+// its integral over the light is the cosine's over Minv applied to the light, a
+// polygon again, integrated by the edge formula (Lambert's, seed 001 eq. 1), times
+// the lobe's magnitude. Domain: every case of CONTRACT.md 2 (n.v <= 0 gives
+// specular 0). Error: the fit's (README, `arealight report`); diffuse is the exact
+// Lambert term (fp32 rounding only).
+//
+// Keys: horizon=clip clips the transformed polygon to z >= 0 exactly; horizon=proxy
+// (seed 001) integrates it unclipped and replaces the clipped form factor by that of
+// a sphere with the same vector form factor (a table: the amplitude texture's w).
+// edge=acos takes theta / sin(theta) exactly; edge=poly by a quadratic in cos(theta)
+// (scripts/fit_edge_poly.py). precision=fp16 computes the edge integrals, the
+// clipping and the proxy in half precision (hreal), after the transform in fp32.
+
+// Grid of the tables (include/arealight/ltc_table.hpp, ltc_rho_range in
+// fit/ltc_table.cpp): 64 x 64 cells; rho = sqrt(alpha) spans the contract's
+// parameter range (alpha in [0.001, 1]; phong and blinn through alpha = sqrt(2 / (N + 2))
+// for N in [1, 1e5]).
+const real AL_LTC_SIZE = AL_R(64.0);
+#if defined(AL_DIST_PHONG) || defined(AL_DIST_BLINN)
+const real AL_LTC_RHO_MIN = AL_R(0.0668727776);  // (2 / 100002)^(1/4)
+const real AL_LTC_RHO_MAX = AL_R(0.9036020036);  // (2 / 3)^(1/4)
+#else
+const real AL_LTC_RHO_MIN = AL_R(0.0316227766);  // sqrt(0.001)
+const real AL_LTC_RHO_MAX = AL_R(1.0);
+#endif
+
+#ifdef AL_LANG_CPP
+// Compute shaders have no derivatives: GLSL samples with an explicit LOD; the
+// mirror's sampler has one level.
+vec4 textureLod(const AlSampler2D& s, vec2 uv, float) { return texture(s, uv); }
+#endif
+
+// Texture coordinates of (rho, cos theta_v): texel centres are the fitted cells.
+vec2 al_ltc_uv(real param, real nv) {
+#if defined(AL_DIST_PHONG) || defined(AL_DIST_BLINN)
+    real alpha = sqrt(AL_R(2.0) / (param + AL_R(2.0)));
+#else
+    real alpha = param;
+#endif
+    real rho = sqrt(alpha);
+    real u = clamp((rho - AL_LTC_RHO_MIN) / (AL_LTC_RHO_MAX - AL_LTC_RHO_MIN), AL_R(0.0),
+                   AL_R(1.0));
+    real w = sqrt(clamp(AL_R(1.0) - nv, AL_R(0.0), AL_R(1.0)));
+    return vec2((rvec2(u, w) * (AL_LTC_SIZE - AL_R(1.0)) + AL_R(0.5)) / AL_LTC_SIZE);
+}
+
+// The angle atan2(s, x) in [0, pi] for s >= 0, by one quotient t = min / max in
+// [0, 1] and Abramowitz & Stegun 4.4.49's odd polynomial for atan t (|error| <= 2e-8,
+// below fp32's half ulp of the result; relative 1.8e-8, also for small t). Cheaper than
+// common.glsl's al_atan2 (no reduction quotient), which the LTC's edges (9 per
+// polygon, twice) would spend most of their time in.
+real al_ltc_angle(real s, real x) {
+    real ax = abs(x);
+    real t = min(s, ax) / max(max(s, ax), AL_R(1e-30));
+    real z = t * t;
+    real p = AL_R(0.0028662257);
+    p = p * z - AL_R(0.0161657367);
+    p = p * z + AL_R(0.0429096138);
+    p = p * z - AL_R(0.0752896400);
+    p = p * z + AL_R(0.1065626393);
+    p = p * z - AL_R(0.1420889944);
+    p = p * z + AL_R(0.1999355085);
+    p = p * z - AL_R(0.3333314528);
+    p = (p * z + AL_R(1.0)) * t;
+    real r = s <= ax ? p : AL_HALF_PI - p;
+    return x < AL_R(0.0) ? AL_PI - r : r;
+}
+
+// The arc between a and b (any lengths: the result is scale-free) times the z
+// component of the unit normal a x b / |a x b|: the edge's share of the form factor
+// times 2 pi (Lambert's formula, seed 001 eq. 1). Exact: atan2(|a x b|, a.b) has no
+// cancellation at either end (the limit 0 at a = b).
+real al_edge_exact(rvec3 a, rvec3 b, rvec3 n) {
+    rvec3 m = cross(a, b);
+    real s = length(m);
+    real f = s > AL_R(0.0) ? al_ltc_angle(s, dot(a, b)) / s : AL_R(1.0);
+    return dot(m, n) * f;
+}
+
+// theta / sin(theta) of the arc between a and b, from x = a.b and m = a x b, in
+// the LTC's arithmetic (hreal) and by the edge key; a and b unit for poly (x is the
+// cosine), any lengths for acos (theta / |m| then absorbs them). poly: the quadratic p(x) =
+// c2 x^2 + c1 x + c0 with p(1) = 1, largest relative error 5.2e-3 on [0, 1] (seed 001
+// prints 0.33735186 x^2 - 0.89665001 x + pi/2: 1.15e-2, and 1.15% too large on every
+// small edge); for x < 0, theta / sin = pi / sin - p(|x|) (sin floored at fp16's
+// smallest normal: such an edge is nearly a half circle, m nearly 0).
+hreal al_edge_factor(hreal x, hvec3 m) {
+#ifdef AL_EDGE_POLY
+    hreal y = abs(x);
+    hreal p = (hreal(0.28515792) * y + hreal(-0.84773167)) * y + hreal(1.56257375);
+    return x >= hreal(0.0)
+               ? p
+               : hreal(3.14159265) * inversesqrt(max(hreal(1.0) - x * x, hreal(6.2e-5))) - p;
+#else
+    hreal s = length(m);
+    return s > hreal(0.0) ? hreal(al_ltc_angle(float(s), float(x))) / s : hreal(1.0);
+#endif
+}
+
+// Unit vectors where the LTC's edge integral needs them: poly (x = cos theta) and
+// fp16 (its range); the exact acos form is scale-free.
+#if defined(AL_EDGE_POLY) || defined(AL_PRECISION_FP16)
+#define AL_LTC_UNIT(x) normalize(x)
+#else
+#define AL_LTC_UNIT(x) (x)
+#endif
+
+// The edge's share of the vector form factor times 2 pi (its z is the form factor's).
+hvec3 al_edge_ltc(hvec3 a, hvec3 b) {
+    hvec3 m = cross(a, b);
+    return m * al_edge_factor(dot(a, b), m);
+}
+
+#ifndef AL_DIST_PHONG
+// Schlick's (1 - h.v)^5 for the direction w (any length, in the local frame) and the
+// view (sv, 0, nv): h.v = sqrt((1 + w.v / |w|) / 2). -1 when w is 0 (no direction).
+real al_ltc_schlick_weight(rvec3 w, real sv, real nv) {
+    real len = length(w);
+    if (!(len > AL_R(0.0))) return -AL_R(1.0);
+    real hv = sqrt(max(AL_R(0.5) + AL_R(0.5) * (w.x * sv + w.z * nv) / len, AL_R(0.0)));
+    real t = AL_R(1.0) - hv, t2 = t * t;
+    return t2 * t2 * t;
+}
+#endif
+
+// One edge a -> b of a polygon clipped to z >= 0, streamed (the clipped polygon is
+// never stored; polygon.glsl does the same for the exact methods): adds the edge's
+// clipped part to `sum` and records where the boundary leaves (exit) and re-enters
+// (entry) the upper half space; the closing arc exit -> entry along the horizon is
+// added after the loop. The crossing is taken on the chord (planes through the
+// origin keep their sides under projection); it is made unit only where the edge
+// integral needs unit vectors (al_edge_factor), as a and b then are.
+void al_ltc_clip_edge(hvec3 a, hvec3 b, AL_INOUT(hvec3) sum, AL_INOUT(hvec3) exit_pt,
+                      AL_INOUT(hvec3) entry_pt, AL_INOUT(bool) has_exit) {
+    bool ia = a.z >= hreal(0.0), ib = b.z >= hreal(0.0);
+    if (!ia && !ib) return;
+    hvec3 q = a;
+    if (ia != ib) q = AL_LTC_UNIT((a.z * b - b.z * a) / (a.z - b.z));
+    sum += al_edge_ltc(ia ? a : q, ib ? b : q);
+    if (ia && !ib) {
+        exit_pt = q;
+        has_exit = true;
+    }
+    if (!ia && ib) entry_pt = q;
+}
+
+// The same for the Lambert term in the working precision, exact, about n in the
+// case's frame (za = n.a, zb = n.b).
+void al_lambert_clip_edge(rvec3 a, rvec3 b, real za, real zb, rvec3 n, AL_INOUT(real) sum,
+                          AL_INOUT(rvec3) exit_pt, AL_INOUT(rvec3) entry_pt,
+                          AL_INOUT(bool) has_exit) {
+    bool ia = za >= AL_R(0.0), ib = zb >= AL_R(0.0);
+    if (!ia && !ib) return;
+    rvec3 q = a;
+    if (ia != ib) q = (za * b - zb * a) / (za - zb);
+    sum += al_edge_exact(ia ? a : q, ib ? b : q, n);
+    if (ia && !ib) {
+        exit_pt = q;
+        has_exit = true;
+    }
+    if (!ia && ib) entry_pt = q;
+}
+
+// Diffuse and specular (CONTRACT.md 2; no ndf or moment).
+vec4 al_shade(AlCase c) {
+    real side = al_polygon_side(c);
+    if (side == AL_R(0.0)) return vec4(AL_R(0.0));
+    rvec3 n = normalize(rvec3(c.n));
+    rvec3 v = normalize(rvec3(c.v));
+    real nv = dot(n, v);
+    // Frame: z = n, x toward v (ltc_table.hpp). v along n has no azimuth: any x.
+    rvec3 tx = v - n * nv;
+    real tl = length(tx);
+    rvec3 ty;
+    if (tl > AL_R(1e-7)) {
+        tx /= tl;
+        ty = cross(n, tx);
+    } else {
+        al_tangent_frame(n, tx, ty);
+    }
+    vec2 uv = al_ltc_uv(real(c.params.x), nv);
+    rvec4 m = rvec4(textureLod(al_ltc_matrix, uv, 0.0f));
+    rvec4 amp = rvec4(textureLod(al_ltc_amplitude, uv, 0.0f));
+    // Minv times the frame, as rows: t = Minv (d.tx, d.ty, d.n).
+    rvec3 row0 = m.x * tx + m.y * n, row1 = m.z * ty, row2 = m.w * tx + n;
+
+    int count = int(c.params.z);
+    rvec3 center = rvec3(c.center);
+    real lambert = AL_R(0.0);
+    rvec3 lx = rvec3(AL_R(0.0)), le = rvec3(AL_R(0.0));
+    bool has_lx = false;
+    // The LTC's vector form factor times 2 pi: of the clipped polygon (clip) or of the
+    // whole one (proxy).
+    hvec3 vector_ff = hvec3(0.0);
+#ifndef AL_HORIZON_PROXY
+    hvec3 hx = hvec3(0.0), he = hvec3(0.0);
+    bool has_hx = false;
+#endif
+    rvec3 pa, pb;
+    real za, zb;
+    hvec3 ha, hb;
+    // Vertices as given (Lambert, about n) and through Minv (LTC), walked as
+    // polygon.glsl walks them (backwards from the front) so that both sums are >= 0;
+    // the last step closes the polygon at vertex 0.
+    for (int k = 0; k <= AL_MAX_VERTS; ++k) {
+        if (k > count) break;
+        int idx = k == 0 || k == count ? 0 : (side > AL_R(0.0) ? count - k : k);
+        pb = center + rvec3(c.verts[idx]);
+        zb = dot(pb, n);
+        hb = hvec3(AL_LTC_UNIT(rvec3(dot(pb, row0), dot(pb, row1), dot(pb, row2))));
+        if (k > 0) {
+            al_lambert_clip_edge(pa, pb, za, zb, n, lambert, lx, le, has_lx);
+#ifdef AL_HORIZON_PROXY
+            vector_ff += al_edge_ltc(ha, hb);
+#else
+            al_ltc_clip_edge(ha, hb, vector_ff, hx, he, has_hx);
+#endif
+        }
+        pa = pb;
+        za = zb;
+        ha = hb;
+    }
+    if (has_lx) lambert += al_edge_exact(lx, le, n);
+    real diffuse = max(lambert, AL_R(0.0)) / AL_TWO_PI;
+
+    real specular = AL_R(0.0);
+    if (nv > AL_R(0.0)) {
+        real form;
+#ifdef AL_HORIZON_PROXY
+        // Seed 001: a sphere with the polygon's vector form factor F: sin^2(sigma) =
+        // |F|, cos(omega) = F.z / |F|; its clipped form factor |F| S(cos omega, |F|)
+        // from the table (S = 1 where the sphere is above the horizon).
+        real len = real(length(vector_ff)) / AL_TWO_PI;
+        form = AL_R(0.0);
+        if (len > AL_R(0.0)) {
+            real cz = clamp(real(vector_ff.z) / (len * AL_TWO_PI), AL_R(-1.0), AL_R(1.0));
+            rvec2 suv = (rvec2(cz * AL_R(0.5) + AL_R(0.5), min(len, AL_R(1.0))) *
+                             (AL_LTC_SIZE - AL_R(1.0)) + AL_R(0.5)) / AL_LTC_SIZE;
+            form = len * real(textureLod(al_ltc_amplitude, vec2(suv), 0.0f).w);
+        }
+#else
+        if (has_hx) vector_ff += al_edge_ltc(hx, he);
+        form = real(vector_ff.z) / AL_TWO_PI;
+#endif
+#ifdef AL_DIST_PHONG
+        real magnitude = amp.x;
+#else
+        // Fresnel (seed 001, last section): the table's split f0 A + B is the lobe's
+        // whole-hemisphere average of F. A light holding part of the lobe sees F near
+        // its own part's half vectors, so the (1 - h.v)^5 weight moves by its value at
+        // the light's direction in the lobe (the LTC's vector form factor taken back
+        // through M) less its value at the lobe's mean direction (M z): the same for a
+        // light filling the hemisphere. M = Minv^-1 up to scale: xz block
+        // [[1, -b], [-d, a]], y (a - b d) / c.
+        real f0 = real(c.params.w);
+        real magnitude = f0 * amp.x + amp.y;
+        if (f0 < AL_R(1.0)) {
+            rvec3 g = rvec3(vector_ff);
+            rvec3 w = rvec3(g.x - m.y * g.z, g.y * (m.x - m.y * m.w) / m.z, m.x * g.z - m.w * g.x);
+            real sv = sqrt(max(AL_R(1.0) - nv * nv, AL_R(0.0)));
+            real x_light = al_ltc_schlick_weight(w, sv, nv);
+            real x_lobe = al_ltc_schlick_weight(rvec3(-m.y, AL_R(0.0), m.x), sv, nv);
+            if (x_light >= AL_R(0.0) && x_lobe >= AL_R(0.0))
+                magnitude += (AL_R(1.0) - f0) * (amp.x + amp.y) * (x_light - x_lobe);
+        }
+#endif
+        specular = max(form, AL_R(0.0)) * magnitude;
+    }
+    return vec4(diffuse, specular, AL_R(0.0), AL_R(0.0));
+}

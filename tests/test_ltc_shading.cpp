@@ -1,0 +1,201 @@
+// Linearly transformed cosines (templates/method_ltc.glsl) with arealight's fitted
+// tables: every distribution's default and every key against the oracle on seeded
+// random polygons (specular bounded, diffuse exact), both backends and their
+// agreement, the folded Fresnel channel against the same variant without Fresnel,
+// and finite non-negative values at the parameter and view extremes for every
+// listed LTC variant.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <map>
+#include <random>
+#include <string>
+
+#include "arealight/evaluator.hpp"
+#include "arealight/reference.hpp"
+#include "eval_support.hpp"
+#include "microfacet_cases.hpp"
+#include "test_support.hpp"
+
+namespace arealight::test {
+namespace {
+
+const Distribution kAll[] = {Distribution::Phong, Distribution::Blinn, Distribution::Beckmann,
+                             Distribution::Ggx};
+
+std::string ltc_name(Distribution d, const std::string& keys) {
+    std::string s = std::string("dist=") + to_string(d) + ",method=ltc,light=polygon";
+    return keys.empty() ? s : s + "," + keys;
+}
+
+// The random microfacet polygons of microfacet_cases.hpp; phong takes blinn's
+// exponents (N in [1, 1e5]) and ignores f0.
+CaseSet ltc_cases(Distribution d, std::uint64_t seed, int count) {
+    const Distribution from = d == Distribution::Phong ? Distribution::Blinn : d;
+    CaseSet set = random_microfacet_polygons(seed, count, from, "ltc-");
+    for (auto& c : set.cases) c.material.distribution = d;
+    return set;
+}
+
+// Specular relL2 bars on these 60 cases per distribution, about 1.5x the measured value
+// (in brackets; both backends agree to 1e-6 there).
+struct LtcBar {
+    Distribution d;
+    const char* keys;
+    double specular;
+};
+const LtcBar kBars[] = {
+    {Distribution::Ggx, "", 0.037},                                        // [0.0245]
+    {Distribution::Ggx, "edge=poly", 0.038},                               // [0.0250]
+    {Distribution::Ggx, "horizon=proxy", 0.039},                           // [0.0256]
+    {Distribution::Ggx, "precision=fp16", 0.037},                          // [0.0243]
+    {Distribution::Ggx, "precision=fp16,edge=poly,horizon=proxy", 0.16},  // [0.106]
+    {Distribution::Beckmann, "", 0.053},                                   // [0.0352]
+    {Distribution::Blinn, "", 0.052},                                      // [0.0346]
+    {Distribution::Phong, "", 0.056},                                      // [0.0375]
+};
+// diffuse is the exact Lambert term in fp32 (score metric, floor 1e-3).
+constexpr double kDiffuseTol = 2e-5;
+// The mirror against lavapipe: the same table through one bilinear rule (bit-identical,
+// tests/test_vulkan_runner.cpp), fp32 arithmetic in a different order. fp16: al_half
+// rounds each operation as lavapipe does, but the compilers order and fold the half
+// expressions differently, each step worth 1e-3 (measured worst 4.4e-3).
+constexpr double kBackendTol = 1e-3;
+constexpr double kBackendTolFp16 = 1e-2;
+
+}  // namespace
+
+TEST_CASE("ltc: bounded specular error on random polygons, exact diffuse, backends agree",
+          "[shading][vulkan][ltc]") {
+    for (Distribution d : kAll) {
+        const CaseSet cases = ltc_cases(d, 5100 + static_cast<int>(d), 60);
+        std::map<std::string, CaseResult> ref;
+        for (const auto& c : cases.cases) ref[c.id] = reference_case(c, {});
+        for (const LtcBar& bar : kBars) {
+            if (bar.d != d) continue;
+            const std::string name = ltc_name(d, bar.keys);
+            std::map<Backend, ResultSet> out;
+            for (Backend b : {Backend::Cpu, Backend::Vulkan}) {
+                out[b] = run(b, name, cases);
+                REQUIRE(out[b].results.size() == cases.cases.size());
+                const double spec = rel_l2(out[b], ref, &CaseResult::specular);
+                INFO(name << " on " << to_string(b) << ": specular relL2 " << spec);
+                CHECK(spec <= bar.specular);
+                double worst_diffuse = 0;
+                for (const auto& r : out[b].results) {
+                    INFO(r.id);
+                    CHECK(*r.specular >= 0.0);
+                    worst_diffuse =
+                        std::max(worst_diffuse, rel_err(*r.diffuse, *ref.at(r.id).diffuse));
+                }
+                INFO("worst diffuse error " << worst_diffuse);
+                CHECK(worst_diffuse <= kDiffuseTol);
+            }
+            double worst = 0;
+            std::string worst_at;
+            for (std::size_t i = 0; i < cases.cases.size(); ++i) {
+                const auto &c = out[Backend::Cpu].results[i], &g = out[Backend::Vulkan].results[i];
+                const double e = std::max(rel_err(*g.specular, *c.specular),
+                                          rel_err(*g.diffuse, *c.diffuse));
+                if (e > worst) worst = e, worst_at = c.id;
+            }
+            INFO(name << ": worst CPU/GPU relative difference " << worst << " at " << worst_at);
+            CHECK(worst <= (variant(name).precision == Precision::Fp16 ? kBackendTolFp16
+                                                                        : kBackendTol));
+        }
+    }
+}
+
+TEST_CASE("ltc: Fresnel in the magnitude adds at most 1.2x error over F = 1",
+          "[shading][ltc]") {
+    // The same cases without f0 (F = 1) and with f0 on every case: a seeded f0 in
+    // [0, 1], and 0.04 (a dielectric). Fresnel reweights the cases (F is small at normal
+    // views, near 1 at grazing ones, where the LTC's own error is larger), so the plain
+    // relL2 is no yardstick on its own: the yardstick is the plain output scaled by
+    // the oracle's exact per-case ratio ref_F / ref_1 (what a perfect Fresnel channel
+    // on top of the same fit would give). The folded channel (ltc_table.hpp, and the
+    // template's correction for where the light sits in the lobe) must stay within
+    // 1.2x of it (the bar) for random f0, and at f0 0.04, where only the grazing
+    // (1 - h.v)^5 part is left.
+    // Beckmann's channel falls short of the 1.2x (measured 1.40x random, 2.04x at f0
+    // 0.04; blinn 1.07x and 1.65x; ggx 1.00x and 0.95x): its own, looser bars hold the
+    // measured value against regressions.
+    struct FresnelBar {
+        Distribution d;
+        double random_f0, dielectric;
+    };
+    const FresnelBar bars[] = {{Distribution::Blinn, 1.2, 2.0},
+                               {Distribution::Beckmann, 1.6, 2.3},
+                               {Distribution::Ggx, 1.2, 1.2}};
+    for (const FresnelBar& bar : bars) {
+        const Distribution d = bar.d;
+        const CaseSet plain_set = [&] {
+            CaseSet s = ltc_cases(d, 5200 + static_cast<int>(d), 80);
+            for (auto& c : s.cases) {
+                c.material.f0 = 1.0;
+                c.material.has_f0 = false;
+            }
+            return s;
+        }();
+        std::map<std::string, CaseResult> ref_plain;
+        for (const auto& c : plain_set.cases) ref_plain[c.id] = reference_case(c, {});
+        const std::string name = ltc_name(d, "");
+        const ResultSet out_plain = run(Backend::Cpu, name, plain_set);
+        for (int k = 0; k < 2; ++k) {
+            std::mt19937_64 rng(77 + static_cast<int>(d));
+            std::uniform_real_distribution<double> U(0, 1);
+            CaseSet set = plain_set;
+            for (auto& c : set.cases) {
+                c.material.f0 = k == 0 ? 0.04 : U(rng);
+                c.material.has_f0 = true;
+            }
+            std::map<std::string, CaseResult> ref;
+            for (const auto& c : set.cases) ref[c.id] = reference_case(c, {});
+            const ResultSet out = run(Backend::Cpu, name, set);
+            ResultSet scaled = out_plain;
+            for (auto& r : scaled.results) {
+                const double one = *ref_plain.at(r.id).specular, f = *ref.at(r.id).specular;
+                r.specular = one > 0 ? *r.specular * (f / one) : 0.0;
+            }
+            const double e = rel_l2(out, ref, &CaseResult::specular);
+            const double e_scaled = rel_l2(scaled, ref, &CaseResult::specular);
+            const double e_plain = rel_l2(out_plain, ref_plain, &CaseResult::specular);
+            INFO(name << (k == 0 ? ", f0 0.04" : ", random f0") << ": specular relL2 " << e
+                      << ", plain output scaled by the exact F ratio " << e_scaled
+                      << ", plain (F = 1) " << e_plain);
+            CHECK(e <= (k == 0 ? bar.dielectric : bar.random_f0) * e_scaled);
+        }
+    }
+}
+
+TEST_CASE("ltc: every variant finite and non-negative at the extremes", "[shading][vulkan][ltc]") {
+    // alpha 1e-3 and 1 (N 1 and 1e5), views from normal to grazing (n.v 1e-6) and from
+    // below (specular 0), lights tiny, along r, crossing the horizon and nearly filling
+    // the hemisphere; phong on blinn's cases.
+    CaseSet set = extreme_microfacet_polygons();
+    const std::size_t microfacet = set.cases.size();
+    for (std::size_t i = 0; i < microfacet; ++i) {
+        if (set.cases[i].material.distribution != Distribution::Blinn) continue;
+        Case c = set.cases[i];
+        c.id += "-phong";
+        c.material.distribution = Distribution::Phong;
+        set.cases.push_back(c);
+    }
+    for (const auto& v : enumerate_variants()) {
+        if (v.method != Method::Ltc) continue;
+        const std::string name = canonical_name(v);
+        for (Backend b : {Backend::Cpu, Backend::Vulkan}) {
+            const ResultSet out = run(b, name, set);
+            CHECK(!out.results.empty());
+            for (const auto& res : out.results) {
+                INFO(name << " " << to_string(b) << " " << res.id << ": diffuse " << *res.diffuse
+                          << ", specular " << *res.specular);
+                CHECK(std::isfinite(*res.diffuse));
+                CHECK(std::isfinite(*res.specular));
+                CHECK(*res.diffuse >= 0.0);
+                CHECK(*res.specular >= 0.0);
+            }
+        }
+    }
+}
+
+}  // namespace arealight::test
