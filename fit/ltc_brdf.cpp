@@ -11,7 +11,6 @@ namespace {
 
 constexpr double kSqrtPi = 1.77245385090551602730;
 
-// (1 - c)^5 without cancellation worries (c in [0, 1]).
 double pow5(double x) {
     const double x2 = x * x;
     return x2 * x2 * x;

@@ -22,47 +22,59 @@
 //    deterministic function of the LTC, and g - h is estimated on the same samples, so its
 //    noise scales with the error, not with g. The caps come from a fixed seeded generator
 //    (splitmix64), scaled to each cell's lobe.
-//    Measured with arealight-ltc-check (fit/ltc_check.cpp) on shared/validation and on larger
-//    sets of the same kinds with oracle references, phase 2 lowers relL2 against phase 1 alone
-//    by about 30 % (GGX, typical and horizon kinds, Phong and Beckmann likewise); phase 1
-//    alone is better on the few GGX cases of validation/typical that are dominated by one
-//    light (0.018 against 0.025), see the report in the lead's notes.
-// The `error` of a cell is phase 2's value, sqrt(relative cap error^2).
+//    For the four smallest roughness columns (i < 4), where rho = sqrt(alpha) steps by
+//    factors of 2.2, 1.8, 1.6 in alpha and the LTC's widths (~1 / alpha) interpolate badly,
+//    phase 2 adds the same metric for the LTC the shader interpolates halfway to the
+//    neighbours already fitted, (i + 1, j) and (i, j - 1), for the lobe there: the cell
+//    trades some accuracy at its node for the table's accuracy between nodes.
+// The `error` of a cell is sqrt of phase 2's metric at the cell alone.
+//
+// Measured with arealight-ltc-check (fit/ltc_check.cpp: the shader's computation in double
+// precision) against shared/validation and against larger sets of the same kinds (500 GGX
+// polygon cases each, oracle references from `arealight reference`), GGX relL2:
+//                         validation typical/horizon/glossy    larger sets
+//   phase 1 only          0.018 / 0.018 / 0.0066              0.053 / 0.040 / 0.016
+//   phases 1 + 2          0.024 / 0.009 / 0.0144              0.039 / 0.038 / 0.011
+//   + interpolation term  0.024 / 0.009 / 0.0100              0.039 / 0.038 / 0.0098
+// Phase 2 helps Phong, Blinn and Beckmann more (relL2 on the larger typical sets 0.10 ->
+// 0.065, 0.096 -> 0.059, 0.091 -> 0.062). On validation/typical, whose relL2 is 78 % one
+// case, phase 1 alone is better for GGX; the larger sets say otherwise.
 //
 // Optimizer: NLopt's Nelder-Mead (LN_NELDERMEAD): derivative-free (phase 1 is only piecewise
 // smooth: its LTC samples move with the parameters), dependable on 4 parameters from the
-// neighbour's start, deterministic. Measured on 500 GGX cases fitted at their own
-// parameters: LN_BOBYQA took half the time for a slightly larger error (relL2 0.046 against
-// 0.044), LN_SBPLX three times as long for a slightly smaller one (0.041 against 0.045).
+// neighbour's start, deterministic. On 500 GGX cases fitted at their own parameters,
+// LN_BOBYQA took half the time for relL2 0.046 against 0.044; on 300 of them LN_SBPLX took
+// three times as long for 0.041 against 0.045.
 //
 // Parametrisation: M = Minv^-1 = R_y(theta) [[m11, 0, m13], [0, m22, 0], [0, 0, 1]], which
 // covers every Minv = [[a, 0, b], [0, c, 0], [d, 0, 1]] of positive determinant
 // (d = tan theta, a = (1 - m13 d) / m11, b = -(d + m13) / m11, c = 1 / (m22 cos theta)):
 // the optimizer sees theta = theta0 + m11_0 t, log m11, log m22 and m13 = m13_0 + m11_0 s, so
 // that its steps are relative to the lobe's width. The frame angle is free (fixing it at the
-// lobe's average direction, as Heitz does, doubled the GGX error at grazing views) but
-// bounded by |theta| <= theta_v + 0.2: beyond, the metric is flat for Phong, Blinn and
-// Beckmann lobes and the fit wandered to theta near 90 degrees, where the stored form
+// lobe's average direction, as Heitz does, quadrupled the GGX error on the larger typical
+// set) but bounded by |theta| <= theta_v + 0.2: beyond, the metric is flat for Phong, Blinn
+// and Beckmann lobes and the fit wandered to theta near 90 degrees, where the stored form
 // (normalised by Minv[2][2] = cos theta) blows up and neighbouring cells stop interpolating.
 // At normal view (j = 0) the lobe is isotropic and only m11 = m22 is fitted.
 //
 // Views: cos theta_v = 1 - w^2 is clamped to >= kCosThetaMin = 1e-3 (the grazing row
 // j = size - 1 would otherwise be n.v = 0, where the specular is 0 by definition).
 //
-// Order (continuity, Heitz): the normal-view row from rough to smooth, each cell from its
-// rougher neighbour; then every roughness column from normal to grazing, each cell from
-// the previous view. Columns are independent chains run in parallel: the result does not
-// depend on the number of threads (bit for bit on one machine).
+// Order (continuity, Heitz): each cell starts from the previous view of its roughness,
+// (i, j - 1), and the normal-view row from the rougher neighbour (i + 1, 0); the first cell
+// is (size - 1, 0). Cells run in parallel as soon as the cells they use are done; the
+// result depends only on those, not on the number of threads (bit for bit on one machine).
 #include <nlopt.hpp>
 
 #include <algorithm>
-#include <atomic>
-#include <chrono>
+#include <array>
+#include <condition_variable>
 #include <cmath>
 #include <cstdint>
 #include <functional>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <thread>
 #include <vector>
 
@@ -501,39 +513,65 @@ std::optional<LtcTable> fit_ltc(Distribution d, const LtcFitOptions& opt,
     t.cells.assign(static_cast<std::size_t>(n) * n, LtcCell{});
     auto cell = [&](int i, int j) -> LtcCell& { return t.cells[static_cast<std::size_t>(j) * n + i]; };
 
-    // Anti-diagonals k = (n - 1 - i) + j in turn: every cell of one depends only on cells of
-    // earlier ones ((i + 1, j) and (i, j - 1)), so each is fitted in parallel.
+    // Each cell waits for the cells it starts from or is fitted against: (i, j - 1) and, on
+    // the row j = 0 and in the columns fitted for interpolation, (i + 1, j). A cell's
+    // result depends only on those, so the table does not depend on the scheduling.
+    auto needs_u = [&](int i, int j) { return i + 1 < n && (j == 0 || i < kInterpolatedColumns); };
+    const int total = n * n;
+    std::vector<int> missing(static_cast<std::size_t>(total), 0);
+    std::vector<int> ready;
+    for (int j = 0; j < n; ++j) {
+        for (int i = 0; i < n; ++i) {
+            int& m = missing[static_cast<std::size_t>(j) * n + i];
+            m = (j > 0 ? 1 : 0) + (needs_u(i, j) ? 1 : 0);
+            if (m == 0) ready.push_back(j * n + i);
+        }
+    }
+    std::mutex mu;
+    std::condition_variable cv;
+    int done = 0;
+    auto worker = [&]() {
+        std::unique_lock<std::mutex> lock(mu);
+        for (;;) {
+            cv.wait(lock, [&] { return !ready.empty() || done == total; });
+            if (ready.empty()) return;
+            const int k = ready.back();
+            ready.pop_back();
+            lock.unlock();
+            const int i = k % n, j = k / n;
+            const LtcCell* start = j > 0 ? &cell(i, j - 1) : i + 1 < n ? &cell(i + 1, 0) : nullptr;
+            const LtcCell result =
+                fit_ltc_cell(d, n, i, j, start, i + 1 < n ? &cell(i + 1, j) : nullptr,
+                             j > 0 ? &cell(i, j - 1) : nullptr);
+            lock.lock();
+            cell(i, j) = result;
+            ++done;
+            // Dependents: (i, j + 1) and (i - 1, j).
+            if (j + 1 < n && --missing[static_cast<std::size_t>(k + n)] == 0) ready.push_back(k + n);
+            if (i > 0 && needs_u(i - 1, j) && --missing[static_cast<std::size_t>(k - 1)] == 0)
+                ready.push_back(k - 1);
+            cv.notify_all();
+        }
+    };
     unsigned threads = opt.threads > 0 ? static_cast<unsigned>(opt.threads)
                                        : std::max(1u, std::thread::hardware_concurrency());
     threads = std::min<unsigned>(threads, static_cast<unsigned>(n));
-    const int total = n * n;
-    std::atomic<int> done{0};
-    std::vector<std::pair<int, int>> diagonal;
-    for (int k = 0; k <= 2 * (n - 1); ++k) {
-        diagonal.clear();
-        for (int j = 0; j < n; ++j) {
-            const int i = n - 1 - (k - j);
-            if (i >= 0 && i < n) diagonal.push_back({i, j});
-        }
-        std::atomic<std::size_t> next{0};
-        auto worker = [&]() {
-            for (;;) {
-                const std::size_t q = next++;
-                if (q >= diagonal.size()) return;
-                const auto [i, j] = diagonal[q];
-                const LtcCell* start = j > 0 ? &cell(i, j - 1) : i + 1 < n ? &cell(i + 1, 0) : nullptr;
-                cell(i, j) = fit_ltc_cell(d, n, i, j, start, i + 1 < n ? &cell(i + 1, j) : nullptr,
-                                          j > 0 ? &cell(i, j - 1) : nullptr);
-                ++done;
+    std::vector<std::thread> pool;
+    for (unsigned q = 0; q < threads; ++q) pool.emplace_back(worker);
+    {
+        std::unique_lock<std::mutex> lock(mu);
+        int reported = 0;
+        while (reported < total) {
+            cv.wait(lock, [&] { return done != reported; });
+            reported = done;
+            if (opt.progress) {
+                lock.unlock();
+                opt.progress(reported, total);
+                lock.lock();
             }
-        };
-        const unsigned m = std::min<unsigned>(threads, static_cast<unsigned>(diagonal.size()));
-        std::vector<std::thread> pool;
-        for (unsigned q = 1; q < m; ++q) pool.emplace_back(worker);
-        worker();
-        for (auto& th : pool) th.join();
-        if (opt.progress) opt.progress(done, total);
+        }
     }
+    for (auto& th : pool) th.join();
 
     for (int k = 0; k < total; ++k) {
         const LtcCell& c = t.cells[k];

@@ -86,15 +86,14 @@ real al_edge_exact(rvec3 a, rvec3 b, rvec3 n) {
 // cosine), any lengths for acos (theta / |m| then absorbs them). poly: the quadratic p(x) =
 // c2 x^2 + c1 x + c0 with p(1) = 1, largest relative error 5.2e-3 on [0, 1] (seed 001
 // prints 0.33735186 x^2 - 0.89665001 x + pi/2: 1.15e-2, and 1.15% too large on every
-// small edge); for x < 0, theta / sin = pi / sin - p(|x|) (sin floored at fp16's
-// smallest normal: such an edge is nearly a half circle, m nearly 0).
+// small edge); for x < 0, theta / sin = pi / sin - p(|x|) with sin = |m| (seed 001 forms
+// sqrt(1 - x^2), which cancels in fp16 as the edge nears a half circle), floored at
+// fp16's smallest normal.
 hreal al_edge_factor(hreal x, hvec3 m) {
 #ifdef AL_EDGE_POLY
     hreal y = abs(x);
     hreal p = (hreal(0.28515792) * y + hreal(-0.84773167)) * y + hreal(1.56257375);
-    return x >= hreal(0.0)
-               ? p
-               : hreal(3.14159265) * inversesqrt(max(hreal(1.0) - x * x, hreal(6.2e-5))) - p;
+    return x >= hreal(0.0) ? p : hreal(3.14159265) / max(length(m), hreal(6.2e-5)) - p;
 #else
     hreal s = length(m);
     return s > hreal(0.0) ? hreal(al_ltc_angle(float(s), float(x))) / s : hreal(1.0);
@@ -150,14 +149,22 @@ void al_ltc_clip_edge(hvec3 a, hvec3 b, AL_INOUT(hvec3) sum, AL_INOUT(hvec3) exi
 
 // The same for the Lambert term in the working precision, exact, about n in the
 // case's frame (za = n.a, zb = n.b).
-void al_lambert_clip_edge(rvec3 a, rvec3 b, real za, real zb, rvec3 n, AL_INOUT(real) sum,
-                          AL_INOUT(rvec3) exit_pt, AL_INOUT(rvec3) entry_pt,
+// The edge's unit normal m comes from the vertex offsets (polygon.glsl's rule: a x (b - a)
+// with b - a formed from the offsets, which the sums a, b would round away when p is
+// near the light's plane); the clipped arc keeps it.
+void al_lambert_clip_edge(rvec3 a, rvec3 b, real za, real zb, rvec3 m, rvec3 n,
+                          AL_INOUT(real) sum, AL_INOUT(rvec3) exit_pt, AL_INOUT(rvec3) entry_pt,
                           AL_INOUT(bool) has_exit) {
     bool ia = za >= AL_R(0.0), ib = zb >= AL_R(0.0);
     if (!ia && !ib) return;
     rvec3 q = a;
-    if (ia != ib) q = (za * b - zb * a) / (za - zb);
-    sum += al_edge_exact(ia ? a : q, ib ? b : q, n);
+    if (ia != ib) q = normalize((za * b - zb * a) / (za - zb));
+    rvec3 a0 = ia ? a : q, b0 = ib ? b : q;
+    // The arc's sine along m (polygon.glsl's al_arc), not |a0 x b0|: m carries the
+    // offsets' precision.
+    real sn = dot(b0, cross(m, a0));
+    real arc = al_ltc_angle(abs(sn), dot(a0, b0));
+    sum += (sn < AL_R(0.0) ? -arc : arc) * dot(m, n);
     if (ia && !ib) {
         exit_pt = q;
         has_exit = true;
@@ -200,7 +207,7 @@ vec4 al_shade(AlCase c) {
     hvec3 hx = hvec3(0.0), he = hvec3(0.0);
     bool has_hx = false;
 #endif
-    rvec3 pa, pb;
+    rvec3 pa, pb, da, db;
     real za, zb;
     hvec3 ha, hb;
     // Vertices as given (Lambert, about n) and through Minv (LTC), walked as
@@ -209,11 +216,13 @@ vec4 al_shade(AlCase c) {
     for (int k = 0; k <= AL_MAX_VERTS; ++k) {
         if (k > count) break;
         int idx = k == 0 || k == count ? 0 : (side > AL_R(0.0) ? count - k : k);
-        pb = center + rvec3(c.verts[idx]);
+        db = rvec3(c.verts[idx]);
+        pb = normalize(center + db);
         zb = dot(pb, n);
         hb = hvec3(AL_LTC_UNIT(rvec3(dot(pb, row0), dot(pb, row1), dot(pb, row2))));
         if (k > 0) {
-            al_lambert_clip_edge(pa, pb, za, zb, n, lambert, lx, le, has_lx);
+            rvec3 me = normalize(cross(center + da, db - da));
+            al_lambert_clip_edge(pa, pb, za, zb, me, n, lambert, lx, le, has_lx);
 #ifdef AL_HORIZON_PROXY
             vector_ff += al_edge_ltc(ha, hb);
 #else
@@ -221,10 +230,15 @@ vec4 al_shade(AlCase c) {
 #endif
         }
         pa = pb;
+        da = db;
         za = zb;
         ha = hb;
     }
-    if (has_lx) lambert += al_edge_exact(lx, le, n);
+    // The closing arc along the horizon, exit -> entry, about n: in [0, pi] (the light
+    // lies in the open half space of its plane, which holds half the horizon circle).
+    // Its sine is taken along n and floored at 0, so that an arc of nearly pi (p near
+    // the light's plane, the foot inside) cannot flip sign through rounding.
+    if (has_lx) lambert += al_ltc_angle(max(dot(le, cross(n, lx)), AL_R(0.0)), dot(lx, le));
     real diffuse = max(lambert, AL_R(0.0)) / AL_TWO_PI;
 
     real specular = AL_R(0.0);
@@ -243,7 +257,12 @@ vec4 al_shade(AlCase c) {
             form = len * real(textureLod(al_ltc_amplitude, vec2(suv), 0.0f).w);
         }
 #else
-        if (has_hx) vector_ff += al_edge_ltc(hx, he);
+        // The closing arc on the horizon z = 0, as for the Lambert term: along +z, its
+        // sine floored at 0.
+        if (has_hx) {
+            hreal sz = max(cross(hx, he).z, hreal(0.0));
+            vector_ff.z += sz * al_edge_factor(dot(hx, he), hvec3(hreal(0.0), hreal(0.0), sz));
+        }
         form = real(vector_ff.z) / AL_TWO_PI;
 #endif
 #ifdef AL_DIST_PHONG

@@ -86,10 +86,13 @@ double ltc_density(const LtcCell& c, glm::dvec3 w) {
     return o.z / l / kPi * std::abs(det) / (l * l * l);
 }
 
+// Refits cell (i, j) from its committed neighbours as fit_ltc does.
 void check_refit(Distribution d, int i, int j) {
     const LtcTable& t = builtin_ltc_table(d);
     const LtcCell& start = j > 0 ? t.at(i, j - 1) : t.at(i + 1, 0);
-    const LtcCell got = fit_ltc_cell(d, t.size, i, j, &start);
+    const LtcCell* next_u = i + 1 < t.size ? &t.at(i + 1, j) : nullptr;
+    const LtcCell* prev_w = j > 0 ? &t.at(i, j - 1) : nullptr;
+    const LtcCell got = fit_ltc_cell(d, t.size, i, j, &start, next_u, prev_w);
     const LtcCell& want = t.at(i, j);
     const double scale = std::max({std::abs(want.a), std::abs(want.b), std::abs(want.c), 1.0});
     const double amp = want.amp_f0 + want.amp_one;
@@ -111,6 +114,7 @@ TEST_CASE("LTC: committed cells are reproduced by a refit from their neighbour",
     check_refit(Distribution::Ggx, 20, 10);
     check_refit(Distribution::Ggx, 45, 40);
     check_refit(Distribution::Ggx, 8, 58);
+    check_refit(Distribution::Ggx, 2, 30);  // fitted for interpolation too
     check_refit(Distribution::Beckmann, 30, 33);
     check_refit(Distribution::Blinn, 12, 45);
     check_refit(Distribution::Phong, 40, 0);

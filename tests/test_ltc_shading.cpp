@@ -44,13 +44,13 @@ struct LtcBar {
     double specular;
 };
 const LtcBar kBars[] = {
-    {Distribution::Ggx, "", 0.037},                                        // [0.0245]
-    {Distribution::Ggx, "edge=poly", 0.038},                               // [0.0250]
-    {Distribution::Ggx, "horizon=proxy", 0.039},                           // [0.0256]
-    {Distribution::Ggx, "precision=fp16", 0.037},                          // [0.0243]
-    {Distribution::Ggx, "precision=fp16,edge=poly,horizon=proxy", 0.16},  // [0.106]
+    {Distribution::Ggx, "", 0.037},                                        // [0.0242]
+    {Distribution::Ggx, "edge=poly", 0.037},                               // [0.0247]
+    {Distribution::Ggx, "horizon=proxy", 0.039},                           // [0.0255]
+    {Distribution::Ggx, "precision=fp16", 0.037},                          // [0.0241]
+    {Distribution::Ggx, "precision=fp16,edge=poly,horizon=proxy", 0.039},  // [0.0257]
     {Distribution::Beckmann, "", 0.053},                                   // [0.0352]
-    {Distribution::Blinn, "", 0.052},                                      // [0.0346]
+    {Distribution::Blinn, "", 0.052},                                      // [0.0347]
     {Distribution::Phong, "", 0.056},                                      // [0.0375]
 };
 // diffuse is the exact Lambert term in fp32 (score metric, floor 1e-3).
@@ -116,14 +116,15 @@ TEST_CASE("ltc: Fresnel in the magnitude adds at most 1.2x error over F = 1",
     // template's correction for where the light sits in the lobe) must stay within
     // 1.2x of it (the bar) for random f0, and at f0 0.04, where only the grazing
     // (1 - h.v)^5 part is left.
-    // Beckmann's channel falls short of the 1.2x (measured 1.40x random, 2.04x at f0
-    // 0.04; blinn 1.07x and 1.65x; ggx 1.00x and 0.95x): its own, looser bars hold the
-    // measured value against regressions.
+    // Measured ratios to the yardstick, random f0 / f0 0.04: ggx 1.05 / 1.15, blinn
+    // 1.12 / 1.75, beckmann 1.40 / 2.04. Beckmann's channel (and blinn's at f0 0.04) falls
+    // short of the 1.2x: their own, looser bars hold the measured value against
+    // regressions.
     struct FresnelBar {
         Distribution d;
         double random_f0, dielectric;
     };
-    const FresnelBar bars[] = {{Distribution::Blinn, 1.2, 2.0},
+    const FresnelBar bars[] = {{Distribution::Blinn, 1.2, 2.2},
                                {Distribution::Beckmann, 1.6, 2.3},
                                {Distribution::Ggx, 1.2, 1.2}};
     for (const FresnelBar& bar : bars) {
