@@ -278,6 +278,9 @@ std::optional<Report> run_report(Evaluator& ev, const CaseSet& cases, const Repo
     // Deterministic counts, once per variant.
     std::vector<std::size_t> spirv(variants.size(), 0), x86(variants.size(), 0);
     std::vector<std::size_t> fetches(variants.size(), 0), table_bytes(variants.size(), 0);
+    // Variants that compile to the same module (beckmann's and ggx's ltc differ only in
+    // their tables) find it in lavapipe's cache already: count it once.
+    std::map<std::vector<uint32_t>, std::size_t> x86_of;
     for (std::size_t k = 0; k < variants.size(); ++k) {
         auto words = build_spirv(variants[k], true, diag);
         if (!words) return std::nullopt;
@@ -285,9 +288,15 @@ std::optional<Report> run_report(Evaluator& ev, const CaseSet& cases, const Repo
         fetches[k] = spirv_texture_sample_count(*words);
         for (const Texture2D* t : variant_textures(variants[k])) table_bytes[k] += t->bytes();
         if (!opt.shader_cache_dir.empty()) {
-            auto code = lavapipe_machine_code(variants[k], opt.shader_cache_dir, diag);
-            if (!code) return std::nullopt;
-            x86[k] = code->instructions;
+            auto known = x86_of.find(*words);
+            if (known != x86_of.end()) {
+                x86[k] = known->second;
+            } else {
+                auto code = lavapipe_machine_code(variants[k], opt.shader_cache_dir, diag);
+                if (!code) return std::nullopt;
+                x86[k] = code->instructions;
+                x86_of.emplace(*words, x86[k]);
+            }
         }
         if (progress) progress("compile", k + 1, variants.size());
     }
