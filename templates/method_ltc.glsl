@@ -70,17 +70,6 @@ real al_ltc_angle(real s, real x) {
     return x < AL_R(0.0) ? AL_PI - r : r;
 }
 
-// The arc between a and b (any lengths: the result is scale-free) times the z
-// component of the unit normal a x b / |a x b|: the edge's share of the form factor
-// times 2 pi (Lambert's formula, seed 001 eq. 1). Exact: atan2(|a x b|, a.b) has no
-// cancellation at either end (the limit 0 at a = b).
-real al_edge_exact(rvec3 a, rvec3 b, rvec3 n) {
-    rvec3 m = cross(a, b);
-    real s = length(m);
-    real f = s > AL_R(0.0) ? al_ltc_angle(s, dot(a, b)) / s : AL_R(1.0);
-    return dot(m, n) * f;
-}
-
 // theta / sin(theta) of the arc between a and b, from x = a.b and m = a x b, in
 // the LTC's arithmetic (hreal) and by the edge key; a and b unit for poly (x is the
 // cosine), any lengths for acos (theta / |m| then absorbs them). poly: the quadratic p(x) =
@@ -158,7 +147,7 @@ void al_lambert_clip_edge(rvec3 a, rvec3 b, real za, real zb, rvec3 m, rvec3 n,
     bool ia = za >= AL_R(0.0), ib = zb >= AL_R(0.0);
     if (!ia && !ib) return;
     rvec3 q = a;
-    if (ia != ib) q = normalize((za * b - zb * a) / (za - zb));
+    if (ia != ib) q = al_crossing(a, b, za, zb);
     rvec3 a0 = ia ? a : q, b0 = ib ? b : q;
     // The arc's sine along m (polygon.glsl's al_arc), not |a0 x b0|: m carries the
     // offsets' precision.
