@@ -31,6 +31,7 @@
 #include "arealight/report.hpp"
 #include "arealight/score.hpp"
 #include "fit_ltc.hpp"
+#include "generate.hpp"
 #include "summary.hpp"
 
 namespace {
@@ -116,25 +117,6 @@ int run_eval(const std::string& cases_path, const std::string& variant_name,
     if (!arealight::write_results(out_path, *results, print_diagnostic)) return kRuntime;
     fmt::print(stderr, "eval: {} cases on {}, {} not applicable to {}\n", stats.evaluated, backend,
                stats.skipped, arealight::canonical_name(*variant));
-    return kOk;
-}
-
-int run_generate(const std::string& variant_name, const std::string& glsl_path,
-                 const std::string& spv_path, bool no_opt) {
-    auto variant = arealight::parse_variant(variant_name, print_diagnostic);
-    if (!variant) return kBadInput;
-    const std::string glsl = arealight::generate_source(*variant, arealight::Language::Glsl);
-    // Compile even when only GLSL is asked for: a written shader is a valid shader.
-    auto spirv = arealight::build_spirv(*variant, !no_opt, print_diagnostic);
-    if (!spirv) return kRuntime;
-    if (glsl_path.empty() && spv_path.empty()) fmt::print("{}", glsl);
-    if (!glsl_path.empty() && !arealight::write_file_atomic(glsl_path, glsl, print_diagnostic))
-        return kRuntime;
-    if (!spv_path.empty()) {
-        const std::string bytes(reinterpret_cast<const char*>(spirv->data()),
-                                spirv->size() * sizeof(uint32_t));
-        if (!arealight::write_file_atomic(spv_path, bytes, print_diagnostic)) return kRuntime;
-    }
     return kOk;
 }
 
@@ -365,14 +347,8 @@ int main(int argc, char** argv) {
     eval->add_option("--device", device, "Vulkan device name substring (default: first device)");
     eval->add_option("--out", out_path, "arealight-results/1 file to write")->required();
 
-    std::string glsl_path, spv_path;
-    bool no_opt = false;
-    auto* generate = app.add_subcommand(
-        "generate", "Write a variant's GLSL and/or SPIR-V (GLSL on stdout when no file is given)");
-    generate->add_option("--variant", variant, "variant name")->required();
-    generate->add_option("--glsl", glsl_path, "GLSL file to write");
-    generate->add_option("--spv", spv_path, "SPIR-V file to write");
-    generate->add_flag("--no-opt", no_opt, "skip the SPIRV-Tools performance passes");
+    arealight::cli::GenerateArgs generate_args;
+    auto* generate = arealight::cli::add_generate_command(app, generate_args);
 
     double rel_tol = 1e-10;
     unsigned threads = std::max(1u, std::thread::hardware_concurrency());
@@ -476,7 +452,7 @@ int main(int argc, char** argv) {
     if (report->parsed()) return run_report(rep, false);
     if (sweep->parsed()) return run_report(swp, true);
     if (eval->parsed()) return run_eval(cases_path, variant, backend, device, out_path);
-    if (generate->parsed()) return run_generate(variant, glsl_path, spv_path, no_opt);
+    if (generate->parsed()) return arealight::cli::run_generate(generate_args, print_diagnostic);
     if (bench->parsed())
         return run_bench(cases_path, bench_variants, exponents, backend, min_cases, repeats);
     if (compare->parsed()) return run_compare(ref_path, out_path, floor);
