@@ -138,13 +138,18 @@ std::optional<std::vector<SelectedVariant>> select_variants(const Scene& scene,
         }
         const LightNeeds needs = needs_of(scene, light);
         if (method && !scene.max_error) {
-            Variant v;
-            v.dist = dist;
-            v.method = *method;
-            v.light = light;
-            out.push_back({specialise(v, needs), fmt::format("quality.method {}: every other key "
-                                                             "at its default",
-                                                             to_string(*method))});
+            // Parsed rather than assembled, so that the family's own defaults apply (ltc
+            // computes in fp32 where Variant's default precision is fp64).
+            const auto v = parse_variant(fmt::format("dist={},method={},light={}", to_string(dist),
+                                                     to_string(*method), to_string(light)),
+                                         diag);
+            if (!v) {
+                ok = false;
+                continue;
+            }
+            out.push_back({specialise(*v, needs), fmt::format("quality.method {}: every other key "
+                                                              "at its default",
+                                                              to_string(*method))});
             continue;
         }
         const auto found = candidates(measured, light, dist, method);
