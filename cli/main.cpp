@@ -31,6 +31,7 @@
 #include "arealight/report.hpp"
 #include "arealight/score.hpp"
 #include "fit_ltc.hpp"
+#include "generate_scene.hpp"
 #include "quality.hpp"
 #include "summary.hpp"
 
@@ -463,6 +464,8 @@ int main(int argc, char** argv) {
     auto* fit_ltc = arealight::cli::add_fit_ltc_command(app, fit_args);
     arealight::cli::QualityArgs quality_args;
     auto* quality = arealight::cli::add_quality_command(app, quality_args);
+    arealight::cli::SceneVariantsArgs scene_args;
+    auto* scene_variants = arealight::cli::add_scene_variants_command(app, scene_args);
 
     try {
         app.parse(argc, argv);
@@ -486,5 +489,6 @@ int main(int argc, char** argv) {
     if (reference->parsed()) return run_reference(cases_path, out_path, rel_tol, threads, table);
     if (fit_ltc->parsed()) return arealight::cli::run_fit_ltc(fit_args);
     if (quality->parsed()) return arealight::cli::run_quality(quality_args);
+    if (scene_variants->parsed()) return arealight::cli::run_scene_variants(scene_args);
     return kUsage;
 }
