@@ -14,6 +14,7 @@ namespace arealight::cli {
 
 struct GenerateArgs {
     std::vector<std::string> variants;
+    std::string scene;  // instead of variants: the scene's selection
     std::string glsl, spv, library, tables;
     bool no_opt = false;
 };

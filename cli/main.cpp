@@ -32,6 +32,8 @@
 #include "arealight/score.hpp"
 #include "fit_ltc.hpp"
 #include "generate.hpp"
+#include "generate_scene.hpp"
+#include "quality.hpp"
 #include "summary.hpp"
 
 namespace {
@@ -436,6 +438,10 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1.0, 100000.0));
     arealight::cli::FitLtcArgs fit_args;
     auto* fit_ltc = arealight::cli::add_fit_ltc_command(app, fit_args);
+    arealight::cli::QualityArgs quality_args;
+    auto* quality = arealight::cli::add_quality_command(app, quality_args);
+    arealight::cli::SceneVariantsArgs scene_args;
+    auto* scene_variants = arealight::cli::add_scene_variants_command(app, scene_args);
 
     try {
         app.parse(argc, argv);
@@ -458,5 +464,7 @@ int main(int argc, char** argv) {
     if (compare->parsed()) return run_compare(ref_path, out_path, floor);
     if (reference->parsed()) return run_reference(cases_path, out_path, rel_tol, threads, table);
     if (fit_ltc->parsed()) return arealight::cli::run_fit_ltc(fit_args);
+    if (quality->parsed()) return arealight::cli::run_quality(quality_args);
+    if (scene_variants->parsed()) return arealight::cli::run_scene_variants(scene_args);
     return kUsage;
 }
