@@ -112,6 +112,13 @@ int run_render(const RenderArgs& a) {
     if (!a.compare.empty()) {
         ref = read_pfm(a.compare, print_diagnostic);
         if (!ref) return kBadInput;
+        // Before the rendering, which may take minutes.
+        if (ref->width != a.size[0] || ref->height != a.size[1]) {
+            print_diagnostic({Severity::Error, a.compare, 0,
+                              fmt::format("{}: is {}x{}, the rendering (--size) {}x{}", a.compare,
+                                          ref->width, ref->height, a.size[0], a.size[1])});
+            return kBadInput;
+        }
     }
     opt.reference = a.reference;
     opt.reference_options.rel_tol = a.tolerance;

@@ -33,10 +33,14 @@ std::optional<Variant> default_render_variant(LightType light, Distribution dist
                                               const std::string& scene_method,
                                               const DiagnosticConsumer& diag) {
     const std::string fixed = fmt::format("dist={},light={}", to_string(dist), to_string(light));
+    const char* method = dist == Distribution::Ggx ? "ltc" : "pearson";
     if (!scene_method.empty()) {
         if (auto v = parse_variant(fixed + ",method=" + scene_method, {})) return v;
+        if (diag)
+            diag({Severity::Note, "", 0,
+                  fmt::format("quality.method {} has no variant for {}; using method={}",
+                              scene_method, fixed, method)});
     }
-    const char* method = dist == Distribution::Ggx ? "ltc" : "pearson";
     auto v = parse_variant(fixed + ",method=" + method, {});
     if (!v) error(diag, fmt::format("no variant renders {} (arealight variants lists them)", fixed));
     return v;

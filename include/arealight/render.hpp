@@ -35,7 +35,7 @@ struct RenderStats {
 };
 
 // The variant for a (light type, distribution) when none is given: the scene's
-// quality.method if that combination exists, else method=ltc for ggx (what README's
+// quality.method if that combination exists (a note says when it does not), else method=ltc for ggx (what README's
 // method guide recommends to renderers) and method=pearson (the paper's best fitted
 // peak method) for phong, blinn and beckmann. nullopt with a diagnostic naming the
 // combination when it has no implementation.
