@@ -191,12 +191,19 @@ TEST_CASE("render: PFM round trip and a truncated file", "[render]") {
     CHECK(c.has("t.pfm: not a colour PFM: 68 bytes of pixels, expected 72 for 2x3"));
 }
 
-TEST_CASE("render: sRGB encoding and false colour endpoints", "[render]") {
+TEST_CASE("render: sRGB encoding, tone map and false colour endpoints", "[render]") {
     CHECK(srgb8(0.0) == 0);
     CHECK(srgb8(-1.0) == 0);
     CHECK(srgb8(1.0) == 255);
     CHECK(srgb8(7.0) == 255);
     CHECK(srgb8(0.5) == 188);  // 1.055 * 0.5^(1/2.4) - 0.055 = 0.7354
+    LinearImage two;
+    two.width = 2;
+    two.height = 1;
+    two.rgb = {0.25f, 2.0f, 0.0f, 0.5f, NAN, 0.5f};
+    const Image8 shown = tone_map(two, 2.0);
+    // Exposure 2: 0.25 shows as 0.5; a NaN channel makes the pixel magenta.
+    CHECK(shown.rgb == std::vector<std::uint8_t>{188, 255, 0, 255, 0, 255});
     using C = std::array<std::uint8_t, 3>;
     CHECK(false_colour(0.0) == C{68, 1, 84});
     CHECK(false_colour(-3.0) == C{68, 1, 84});
