@@ -18,8 +18,6 @@
 #include <string>
 #include <thread>
 
-#include <unistd.h>  // isatty: a live progress line only on a terminal
-
 #include "arealight/atomic_file.hpp"
 #include "arealight/benchmark.hpp"
 #include "arealight/case_io.hpp"
@@ -34,9 +32,13 @@
 #include "generate.hpp"
 #include "generate_scene.hpp"
 #include "quality.hpp"
+#include "progress.hpp"
+#include "render.hpp"
 #include "summary.hpp"
 
 namespace {
+
+using arealight::cli::ProgressPrinter;
 
 enum Exit { kOk = 0, kBadInput = 1, kUsage = 2, kRuntime = 3 };
 
@@ -48,33 +50,6 @@ void print_diagnostic(const arealight::Diagnostic& d) {
         fmt::print(stderr, "arealight: {}: {}\n", arealight::to_string(d.severity), d.message);
     }
 }
-
-// Reports progress on stderr once a run has taken more than a second: one live
-// line (rewritten every 250 ms) on a terminal, plain lines (every 5 s, and the
-// last) when stderr is a file or a pipe, so that logs stay readable.
-class ProgressPrinter {
-  public:
-    ProgressPrinter(std::string what, std::string unit)
-        : what_(std::move(what)),
-          unit_(std::move(unit)),
-          start_(std::chrono::steady_clock::now()),
-          live_(isatty(fileno(stderr)) != 0) {}
-    void operator()(std::size_t done, std::size_t total) {
-        const auto now = std::chrono::steady_clock::now();
-        const double elapsed = std::chrono::duration<double>(now - start_).count();
-        const auto every = live_ ? std::chrono::milliseconds(250) : std::chrono::milliseconds(5000);
-        if (elapsed < 1.0 || (done != total && now - last_ < every)) return;
-        last_ = now;
-        fmt::print(stderr, "{}{}: {}/{} {}, {:.1f} s{}", live_ ? "\r" : "", what_, done, total,
-                   unit_, elapsed, live_ && done != total ? "" : "\n");
-        std::fflush(stderr);
-    }
-
-  private:
-    std::string what_, unit_;
-    std::chrono::steady_clock::time_point start_, last_{};
-    bool live_;
-};
 
 int run_reference(const std::string& cases_path, const std::string& out_path, double rel_tol,
                   unsigned threads, bool table) {
@@ -442,6 +417,8 @@ int main(int argc, char** argv) {
     auto* quality = arealight::cli::add_quality_command(app, quality_args);
     arealight::cli::SceneVariantsArgs scene_args;
     auto* scene_variants = arealight::cli::add_scene_variants_command(app, scene_args);
+    arealight::cli::RenderArgs render_args;
+    auto* render = arealight::cli::add_render_command(app, render_args);
 
     try {
         app.parse(argc, argv);
@@ -466,5 +443,6 @@ int main(int argc, char** argv) {
     if (fit_ltc->parsed()) return arealight::cli::run_fit_ltc(fit_args);
     if (quality->parsed()) return arealight::cli::run_quality(quality_args);
     if (scene_variants->parsed()) return arealight::cli::run_scene_variants(scene_args);
+    if (render->parsed()) return arealight::cli::run_render(render_args);
     return kUsage;
 }

@@ -4,14 +4,7 @@
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 
-function(expect_exit code)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL code)
-    message(FATAL_ERROR "expected exit ${code}, got ${rc} from: ${ARGN}\nstdout: ${out}\nstderr: ${err}")
-  endif()
-  set(LAST_ERR "${err}" PARENT_SCOPE)
-  set(LAST_OUT "${out}" PARENT_SCOPE)
-endfunction()
+include("${CMAKE_CURRENT_LIST_DIR}/cli_support.cmake")
 
 # A malformed case: exit 1, the message names file, case and field, and the
 # existing output keeps its bytes while a new output path is never created.
