@@ -30,6 +30,7 @@
 #include "arealight/reference.hpp"
 #include "arealight/report.hpp"
 #include "arealight/score.hpp"
+#include "compile.hpp"
 #include "fit_ltc.hpp"
 #include "summary.hpp"
 
@@ -460,6 +461,8 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1.0, 100000.0));
     arealight::cli::FitLtcArgs fit_args;
     auto* fit_ltc = arealight::cli::add_fit_ltc_command(app, fit_args);
+    arealight::cli::CompileArgs compile_args;
+    auto* compile = arealight::cli::add_compile_command(app, compile_args);
 
     try {
         app.parse(argc, argv);
@@ -482,5 +485,6 @@ int main(int argc, char** argv) {
     if (compare->parsed()) return run_compare(ref_path, out_path, floor);
     if (reference->parsed()) return run_reference(cases_path, out_path, rel_tol, threads, table);
     if (fit_ltc->parsed()) return arealight::cli::run_fit_ltc(fit_args);
+    if (compile->parsed()) return arealight::cli::run_compile(compile_args);
     return kUsage;
 }
