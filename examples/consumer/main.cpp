@@ -31,19 +31,18 @@ struct Frame {
 };
 struct Light {
     Vec4 vertices[8];
-    Vec4 radiance;
-    int32_t count = 0, two_sided = 0, pad0 = 0, pad1 = 0;
+    float intensity = 1;
+    int32_t count = 0, two_sided = 0, pad0 = 0;
 };
 struct Material {
-    Vec4 albedo, specular;
     int32_t dist = 0;
     float param = 0, f0 = 1, pad0 = 0;
 };
 struct Object {
-    Vec4 a, b;
+    Vec4 a, b, albedo;
     int32_t type = 0, material = 0, pad0 = 0, pad1 = 0;
 };
-static_assert(sizeof(Light) == 160 && sizeof(Material) == 48 && sizeof(Object) == 48,
+static_assert(sizeof(Light) == 144 && sizeof(Material) == 16 && sizeof(Object) == 64,
               "records must match render.comp's std430 layout");
 
 struct BadScene : std::runtime_error {
@@ -80,8 +79,11 @@ Vec4 cross(Vec4 a, Vec4 b) {
 }
 Vec4 scaled(Vec4 a, float s) { return {a.x * s, a.y * s, a.z * s, 0}; }
 
-// Reads the contract's fields (lights, materials) and this example's own (camera, objects,
-// radiance, albedo, specular), which arealight ignores.
+float dot(Vec4 a, Vec4 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+
+// Reads the contract's fields (lights, materials) and the ones `arealight render` reads too
+// (camera, objects, light intensity; include/arealight/render_scene.hpp), which arealight
+// generate ignores.
 Scene read_scene(const std::string& path, int width, int height) {
     std::ifstream in(path);
     if (!in) throw BadScene(path + ": cannot read");
@@ -105,8 +107,7 @@ Scene read_scene(const std::string& path, int width, int height) {
         for (std::size_t k = 0; k < vs.size(); ++k)
             light.vertices[k] = vec(vs[k], where + ".vertices[" + std::to_string(k) + "]");
         light.two_sided = l.value("two_sided", false) ? 1 : 0;
-        light.radiance = l.contains("radiance") ? vec(l["radiance"], where + ".radiance")
-                                                : Vec4{1, 1, 1, 0};
+        light.intensity = l.value("intensity", 1.0f);
         s.lights.push_back(light);
     }
     for (std::size_t i = 0; i < field(j, "materials", path).size(); ++i) {
@@ -124,8 +125,6 @@ Scene read_scene(const std::string& path, int width, int height) {
             throw BadScene(where + ": field 'distribution': render.comp calls ggx and phong only");
         }
         mat.f0 = m.value("f0", 1.0f);
-        mat.albedo = vec(m.value("albedo", json::array({0.5, 0.5, 0.5})), where + ".albedo");
-        mat.specular = vec(m.value("specular", json::array({1, 1, 1})), where + ".specular");
         s.materials.push_back(mat);
     }
     for (std::size_t i = 0; i < field(j, "objects", path).size(); ++i) {
@@ -136,7 +135,7 @@ Scene read_scene(const std::string& path, int width, int height) {
         if (type == "plane") {
             ob.type = 0;
             ob.a = normalized(vec(field(o, "normal", where), where + ".normal"));
-            ob.a.w = field(o, "offset", where).get<float>();
+            ob.a.w = dot(ob.a, vec(field(o, "point", where), where + ".point"));
         } else if (type == "sphere") {
             ob.type = 1;
             ob.a = vec(field(o, "center", where), where + ".center",
@@ -148,6 +147,7 @@ Scene read_scene(const std::string& path, int width, int height) {
         } else {
             throw BadScene(where + ": field 'type': plane, sphere or box");
         }
+        ob.albedo = vec(field(o, "albedo", where), where + ".albedo");
         ob.material = field(o, "material", where).get<int32_t>();
         if (ob.material < 0 || ob.material >= static_cast<int32_t>(s.materials.size()))
             throw BadScene(where + ": field 'material': no such material");
@@ -157,9 +157,11 @@ Scene read_scene(const std::string& path, int width, int height) {
     const json& cam = field(j, "camera", path);
     const Vec4 eye = vec(field(cam, "eye", path + ": camera"), path + ": camera.eye");
     const Vec4 target = vec(field(cam, "target", path + ": camera"), path + ": camera.target");
-    const float half = std::tan(cam.value("fov_y_degrees", 45.0f) * 3.14159265f / 360.0f);
+    const Vec4 up = vec(field(cam, "up", path + ": camera"), path + ": camera.up");
+    const float half = std::tan(field(cam, "fov_deg", path + ": camera").get<float>() *
+                                3.14159265f / 360.0f);
     const Vec4 forward = normalized({target.x - eye.x, target.y - eye.y, target.z - eye.z, 0});
-    const Vec4 right = normalized(cross(forward, {0, 1, 0, 0}));
+    const Vec4 right = normalized(cross(forward, up));
     s.frame.eye = eye;
     s.frame.forward = forward;
     s.frame.right = scaled(right, half * static_cast<float>(width) / static_cast<float>(height));

@@ -3,7 +3,8 @@
 // analytically against the scene's objects (plane, spheres, boxes) and the hit point is shaded
 // by every polygon light through the generated arealight library. Written against CONTRACT.md
 // section 5 only: ArealightSurface, ArealightShading and arealight_polygon_<dist>.
-// Area lights are not shadowed: the analytic integrals see the whole light.
+// Pixel = sum over lights of intensity * (albedo * diffuse + specular), as `arealight render`
+// draws the same scene; area lights are not shadowed (the integrals see the whole light).
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "arealight_scene.glsl"
@@ -11,14 +12,12 @@ layout(local_size_x = 8, local_size_y = 8) in;
 // The host's layout: every record std430, vec3 values padded to vec4.
 struct Light {
     vec4 vertices[8];
-    vec4 radiance;
+    float intensity;
     int count;
     int two_sided;
-    int pad0, pad1;
+    int pad0;
 };
 struct Material {
-    vec4 albedo;
-    vec4 specular;
     int dist;  // kDistGgx or kDistPhong
     float param;
     float f0;
@@ -29,6 +28,7 @@ const int kDistPhong = 1;
 struct Object {
     vec4 a;  // plane: normal, offset; sphere: centre, radius; box: min
     vec4 b;  // box: max
+    vec4 albedo;
     int type;
     int material;
     int pad0, pad1;
@@ -108,7 +108,7 @@ float intersect_light(int i, vec3 o, vec3 d) {
     return t;
 }
 
-vec3 shade(vec3 p, vec3 n, vec3 v, Material m) {
+vec3 shade(vec3 p, vec3 n, vec3 v, Material m, vec3 albedo) {
     ArealightSurface s = ArealightSurface(p, n, v, m.param, m.f0);
     vec3 color = vec3(0.0);
     for (int i = 0; i < frame.light_count; ++i) {
@@ -121,14 +121,14 @@ vec3 shade(vec3 p, vec3 n, vec3 v, Material m) {
         } else {
             r = arealight_polygon_phong(s, vertices, lights[i].count, two_sided);
         }
-        color += lights[i].radiance.rgb * (m.albedo.rgb * r.diffuse + m.specular.rgb * r.specular);
+        color += lights[i].intensity * (albedo * r.diffuse + r.specular);
     }
     return color;
 }
 
-// Reinhard tone map, then the sRGB transfer curve.
+// Clamped to [0, 1], then the sRGB transfer curve.
 uint encode(vec3 c) {
-    c = c / (1.0 + c);
+    c = clamp(c, 0.0, 1.0);
     vec3 srgb = mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(0.0031308, c));
     uvec3 q = uvec3(clamp(srgb, 0.0, 1.0) * 255.0 + 0.5);
     return q.r | (q.g << 8) | (q.b << 16) | (255u << 24);
@@ -163,9 +163,10 @@ void main() {
         }
     }
     if (seen_light >= 0) {
-        color = lights[seen_light].radiance.rgb;
+        color = vec3(lights[seen_light].intensity);
     } else if (hit >= 0) {
-        color = shade(o + best * d, normal, -d, materials[objects[hit].material]);
+        Object ob = objects[hit];
+        color = shade(o + best * d, normal, -d, materials[ob.material], ob.albedo.rgb);
     }
     pixels[px.y * frame.width + px.x] = encode(color);
 }
