@@ -28,6 +28,7 @@
 #include "arealight/reference.hpp"
 #include "arealight/report.hpp"
 #include "arealight/score.hpp"
+#include "compile.hpp"
 #include "fit_ltc.hpp"
 #include "generate.hpp"
 #include "generate_scene.hpp"
@@ -419,6 +420,8 @@ int main(int argc, char** argv) {
     auto* scene_variants = arealight::cli::add_scene_variants_command(app, scene_args);
     arealight::cli::RenderArgs render_args;
     auto* render = arealight::cli::add_render_command(app, render_args);
+    arealight::cli::CompileArgs compile_args;
+    auto* compile = arealight::cli::add_compile_command(app, compile_args);
 
     try {
         app.parse(argc, argv);
@@ -444,5 +447,6 @@ int main(int argc, char** argv) {
     if (quality->parsed()) return arealight::cli::run_quality(quality_args);
     if (scene_variants->parsed()) return arealight::cli::run_scene_variants(scene_args);
     if (render->parsed()) return arealight::cli::run_render(render_args);
+    if (compile->parsed()) return arealight::cli::run_compile(compile_args);
     return kUsage;
 }
