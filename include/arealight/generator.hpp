@@ -64,6 +64,13 @@ enum class KernelOutputs { Shading, All };
 std::string generate_source(const Variant& v, Language lang,
                             KernelOutputs outputs = KernelOutputs::All);
 
+// The validation kernel of `v` (GLSL) around a library text instead of v's own: the
+// same #version prolog and entry point, so generate_kernel(v, library of {v}) compiles
+// to what generate_source(v, Glsl, outputs) does. The library must define v's public
+// function (a scene's pruned library, to compare it with the hand-named variant).
+std::string generate_kernel(const Variant& v, const std::string& library_text,
+                            KernelOutputs outputs = KernelOutputs::Shading);
+
 // Where template text comes from: the embedded copies by default; tests inject
 // modified text (a deliberately broken template) through this.
 using TemplateLookup = std::function<const std::string*(const std::string& path)>;
