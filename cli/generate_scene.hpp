@@ -1,7 +1,7 @@
 // Scenes on the command line (CONTRACT.md 7): `arealight scene-variants --scene FILE`
 // prints the variants a scene's library is made of, one name per line, with why each
-// was chosen on stderr. `generate --scene` will call into this file once the library
-// generator is on main. Hooked into cli/main.cpp like cli/fit_ltc.hpp.
+// was chosen on stderr (`generate --scene`, in cli/generate.cpp, writes their library).
+// Hooked into cli/main.cpp like cli/fit_ltc.hpp.
 #pragma once
 
 #include <CLI/CLI.hpp>

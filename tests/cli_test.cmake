@@ -253,3 +253,22 @@ if(NOT LAST_ERR MATCHES "no shader stage" OR EXISTS "${WORK}/compile/nostage.spv
 endif()
 expect_exit(0 "${AREALIGHT}" compile "${WORK}/compile/main.glsl" --stage comp -o "${WORK}/compile/nostage.spv")
 expect_exit(0 "${AREALIGHT}" compile --help)
+
+# generate --scene (CONTRACT.md 7): a GGX-only scene's library has the one GGX function
+# and no Phong one; a malformed scene exits 1 naming file, light and field, and writes
+# nothing.
+file(WRITE "${WORK}/scene/ggx.scene.json" [=[{"format": "arealight-scene/1",
+  "lights": [{"type": "polygon", "vertices": [[0,0,2],[1,0,2],[1,1,2]], "two_sided": true}],
+  "materials": [{"distribution": "ggx", "alpha": 0.3}]}]=])
+expect_exit(0 "${AREALIGHT}" generate --scene "${WORK}/scene/ggx.scene.json" --library "${WORK}/scene/lib.glsl")
+file(READ "${WORK}/scene/lib.glsl" lib)
+if(NOT lib MATCHES "ArealightShading arealight_polygon_ggx\\(" OR lib MATCHES "arealight_polygon_phong")
+  message(FATAL_ERROR "the GGX scene's library lacks arealight_polygon_ggx or has more: ${lib}")
+endif()
+file(WRITE "${WORK}/scene/bad.scene.json" [=[{"format": "arealight-scene/1",
+  "lights": [{"type": "polygon", "vertices": [[0,0,2],[1,0,2]]}],
+  "materials": [{"distribution": "ggx", "alpha": 0.3}]}]=])
+expect_exit(1 "${AREALIGHT}" generate --scene "${WORK}/scene/bad.scene.json" --library "${WORK}/scene/bad.glsl")
+if(NOT LAST_ERR MATCHES "bad.scene.json: light 0: field 'vertices'" OR EXISTS "${WORK}/scene/bad.glsl")
+  message(FATAL_ERROR "a malformed scene: ${LAST_ERR}")
+endif()
