@@ -43,6 +43,10 @@ spv=$work/build/gen/render.comp.spv
 rebuild first
 [ -s "$lib" ] || fail "no generated library $lib"
 [ -s "$spv" ] || fail "no SPIR-V $spv"
+# The scene asks for no method: its GGX function is the selection's (LTC), whose tables the
+# consumer must upload as the manifest says.
+grep -q 'variant dist=ggx,method=ltc' "$lib" || fail "the GGX function is not LTC: $(grep -m3 variant "$lib")"
+grep -q '"binding_offset"' "$work/build/gen/tables/tables.json" || fail "tables.json lists no table"
 echo "consumer_test: configure + build ($generator) $(since "$t")"
 
 t=$(now)

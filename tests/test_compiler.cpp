@@ -6,10 +6,10 @@
 #include <vector>
 
 #include "arealight/compiler.hpp"
-
-#include <unistd.h>  // getpid: scratch folders of concurrent test runs differ
+#include "scratch_folder.hpp"
 
 using namespace arealight;
+using arealight::test::ScratchFolder;
 
 namespace {
 
@@ -140,34 +140,6 @@ TEST_CASE("a link error (no entry point) fails with an error diagnostic", "[comp
 }
 
 namespace {
-
-// A fresh folder per test case, removed at the end: sources that #include each other.
-class ScratchFolder {
-  public:
-    explicit ScratchFolder(const std::string& name)
-        : path_(std::filesystem::temp_directory_path() /
-                ("arealight_test_" + name + "_" + std::to_string(::getpid()))) {
-        std::filesystem::remove_all(path_);
-        std::filesystem::create_directories(path_);
-    }
-    ~ScratchFolder() {
-        std::error_code ec;
-        std::filesystem::remove_all(path_, ec);
-    }
-    ScratchFolder(const ScratchFolder&) = delete;
-    ScratchFolder& operator=(const ScratchFolder&) = delete;
-
-    std::string write(const std::string& relative, const std::string& text) const {
-        const auto path = path_ / relative;
-        std::filesystem::create_directories(path.parent_path());
-        std::ofstream(path) << text;
-        return path.string();
-    }
-    std::string operator/(const std::string& relative) const { return (path_ / relative).string(); }
-
-  private:
-    std::filesystem::path path_;
-};
 
 const char* const kIncludingShader = R"(#version 450
 layout(local_size_x = 1) in;

@@ -1,8 +1,9 @@
 // Renders scene.json headless on Vulkan with render.comp (which includes the arealight library
 // generated from the same scene) and writes a PNG. The host uploads the camera, lights,
-// materials and objects as they are in the file: everything per pixel happens in the shader.
-//   consumer [OUT.png] [--scene FILE] [--spirv FILE] [--size W H]
-// Exit codes: 0 ok, 1 bad scene or arguments, 3 Vulkan or write failure, 4 a uniform image.
+// materials and objects as they are in the file, and the library's tables as its manifest
+// says: everything per pixel happens in the shader.
+//   consumer [OUT.png] [--scene FILE] [--spirv FILE] [--tables DIR] [--size W H]
+// Exit codes: 0 ok, 1 bad scene, tables or arguments, 3 Vulkan or write failure, 4 a uniform image.
 #include <png.h>
 #include <vulkan/vulkan.h>
 
@@ -13,11 +14,14 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "tables.hpp"
 
 namespace {
 
@@ -77,9 +81,13 @@ Vec4 normalized(Vec4 a) {
 Vec4 cross(Vec4 a, Vec4 b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x, 0};
 }
-Vec4 scaled(Vec4 a, float s) { return {a.x * s, a.y * s, a.z * s, 0}; }
+Vec4 scaled(Vec4 a, float s) {
+    return {a.x * s, a.y * s, a.z * s, 0};
+}
 
-float dot(Vec4 a, Vec4 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+float dot(Vec4 a, Vec4 b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 
 // Reads the contract's fields (lights, materials) and the ones `arealight render` reads too
 // (camera, objects, light intensity; include/arealight/render_scene.hpp), which arealight
@@ -158,8 +166,8 @@ Scene read_scene(const std::string& path, int width, int height) {
     const Vec4 eye = vec(field(cam, "eye", path + ": camera"), path + ": camera.eye");
     const Vec4 target = vec(field(cam, "target", path + ": camera"), path + ": camera.target");
     const Vec4 up = vec(field(cam, "up", path + ": camera"), path + ": camera.up");
-    const float half = std::tan(field(cam, "fov_deg", path + ": camera").get<float>() *
-                                3.14159265f / 360.0f);
+    const float half =
+        std::tan(field(cam, "fov_deg", path + ": camera").get<float>() * 3.14159265f / 360.0f);
     const Vec4 forward = normalized({target.x - eye.x, target.y - eye.y, target.z - eye.z, 0});
     const Vec4 right = normalized(cross(forward, up));
     s.frame.eye = eye;
@@ -174,7 +182,8 @@ Scene read_scene(const std::string& path, int width, int height) {
 }
 
 void check(VkResult r, const char* what) {
-    if (r != VK_SUCCESS) throw std::runtime_error(std::string(what) + ": VkResult " + std::to_string(r));
+    if (r != VK_SUCCESS)
+        throw std::runtime_error(std::string(what) + ": VkResult " + std::to_string(r));
 }
 
 // The device and everything created on it; destroyed in reverse order of creation.
@@ -230,17 +239,21 @@ class Gpu {
     VkQueue queue() const { return queue_; }
     uint32_t family() const { return family_; }
     const std::string& name() const { return device_name_; }
+    VkPhysicalDevice physical() const { return physical_; }
 
-    // Host-visible, host-coherent memory: writes are seen by the device at submit and the
-    // device's writes by the host after the fence, without flush or invalidate calls.
-    uint32_t host_memory_type(uint32_t allowed) const {
+    // The first memory type of `allowed` with every flag of `want`. Host-visible and
+    // host-coherent memory: writes are seen by the device at submit and the device's writes
+    // by the host after the fence, without flush or invalidate calls.
+    uint32_t memory_type(uint32_t allowed, VkMemoryPropertyFlags want) const {
         VkPhysicalDeviceMemoryProperties mp;
         vkGetPhysicalDeviceMemoryProperties(physical_, &mp);
-        const VkMemoryPropertyFlags want =
-            VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
         for (uint32_t i = 0; i < mp.memoryTypeCount; ++i)
             if ((allowed & (1u << i)) && (mp.memoryTypes[i].propertyFlags & want) == want) return i;
-        throw std::runtime_error("no host-visible coherent memory type");
+        throw std::runtime_error("no memory type with flags " + std::to_string(want));
+    }
+    uint32_t host_memory_type(uint32_t allowed) const {
+        return memory_type(
+            allowed, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
     }
 
   private:
@@ -258,7 +271,8 @@ class Buffer {
     Buffer(const Gpu& gpu, VkDeviceSize size) : device_(gpu.device()), size_(size) {
         VkBufferCreateInfo bci{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
         bci.size = size;
-        bci.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+        // Storage for the shader, transfer source for the table uploads.
+        bci.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
         check(vkCreateBuffer(device_, &bci, nullptr, &buffer_), "vkCreateBuffer");
         VkMemoryRequirements req;
         vkGetBufferMemoryRequirements(device_, buffer_, &req);
@@ -293,12 +307,142 @@ class Buffer {
     void* mapped_ = nullptr;
 };
 
-// The compute pipeline over N storage buffers at set 0, bindings 0..N-1, and one command
-// buffer to record its dispatch into.
+// One of the library's tables as the manifest says to sample it: an R32G32B32A32_SFLOAT image
+// of one level in device memory, uploaded through a staging buffer, with a sampler that
+// filters linearly and clamps to the edge in normalized coordinates.
+class SampledImage {
+  public:
+    SampledImage(const Gpu& gpu, const Table& table) : device_(gpu.device()) {
+        const VkFormat format = VK_FORMAT_R32G32B32A32_SFLOAT;
+        VkFormatProperties fp;
+        vkGetPhysicalDeviceFormatProperties(gpu.physical(), format, &fp);
+        if (!(fp.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT))
+            throw std::runtime_error(table.sampler + ": the device cannot filter RGBA32F linearly");
+        const VkExtent3D extent{uint32_t(table.width), uint32_t(table.height), 1};
+        VkImageCreateInfo ici{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+        ici.imageType = VK_IMAGE_TYPE_2D;
+        ici.format = format;
+        ici.extent = extent;
+        ici.mipLevels = 1;
+        ici.arrayLayers = 1;
+        ici.samples = VK_SAMPLE_COUNT_1_BIT;
+        ici.tiling = VK_IMAGE_TILING_OPTIMAL;
+        ici.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+        ici.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+        check(vkCreateImage(device_, &ici, nullptr, &image_), "vkCreateImage");
+        VkMemoryRequirements req;
+        vkGetImageMemoryRequirements(device_, image_, &req);
+        VkMemoryAllocateInfo mai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+        mai.allocationSize = req.size;
+        mai.memoryTypeIndex =
+            gpu.memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+        check(vkAllocateMemory(device_, &mai, nullptr, &memory_), "vkAllocateMemory");
+        check(vkBindImageMemory(device_, image_, memory_, 0), "vkBindImageMemory");
+        upload(gpu, table, extent);
+
+        VkImageViewCreateInfo vci{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+        vci.image = image_;
+        vci.viewType = VK_IMAGE_VIEW_TYPE_2D;
+        vci.format = format;
+        vci.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+        check(vkCreateImageView(device_, &vci, nullptr, &view_), "vkCreateImageView");
+        VkSamplerCreateInfo sci{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+        sci.magFilter = VK_FILTER_LINEAR;
+        sci.minFilter = VK_FILTER_LINEAR;
+        sci.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+        sci.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+        sci.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+        sci.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+        sci.maxLod = 0;
+        check(vkCreateSampler(device_, &sci, nullptr, &sampler_), "vkCreateSampler");
+    }
+    ~SampledImage() {
+        if (sampler_) vkDestroySampler(device_, sampler_, nullptr);
+        if (view_) vkDestroyImageView(device_, view_, nullptr);
+        if (image_) vkDestroyImage(device_, image_, nullptr);
+        if (memory_) vkFreeMemory(device_, memory_, nullptr);
+    }
+    SampledImage(const SampledImage&) = delete;
+    SampledImage& operator=(const SampledImage&) = delete;
+
+    VkDescriptorImageInfo descriptor() const {
+        return {sampler_, view_, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    }
+
+  private:
+    // Staging buffer -> image, then the layout the shader samples in; waits for the queue.
+    void upload(const Gpu& gpu, const Table& table, VkExtent3D extent) {
+        const Buffer staging(gpu, table.rgba);
+        VkCommandPool pool = VK_NULL_HANDLE;
+        VkCommandPoolCreateInfo cpci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+        cpci.queueFamilyIndex = gpu.family();
+        check(vkCreateCommandPool(device_, &cpci, nullptr, &pool), "vkCreateCommandPool");
+        VkCommandBuffer cb = VK_NULL_HANDLE;
+        VkCommandBufferAllocateInfo cbai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+        cbai.commandPool = pool;
+        cbai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+        cbai.commandBufferCount = 1;
+        VkResult r = vkAllocateCommandBuffers(device_, &cbai, &cb);
+        if (r == VK_SUCCESS) {
+            VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+            begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+            vkBeginCommandBuffer(cb, &begin);
+            VkImageMemoryBarrier to_copy{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+            to_copy.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+            to_copy.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+            to_copy.newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+            to_copy.srcQueueFamilyIndex = to_copy.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+            to_copy.image = image_;
+            to_copy.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+            vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
+                                 VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr, 1,
+                                 &to_copy);
+            VkBufferImageCopy region{};
+            region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+            region.imageExtent = extent;
+            vkCmdCopyBufferToImage(cb, staging.handle(), image_,
+                                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+            VkImageMemoryBarrier to_read = to_copy;
+            to_read.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+            to_read.dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
+            to_read.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+            to_read.newLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+            vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                                 VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 0, nullptr, 0, nullptr, 1,
+                                 &to_read);
+            r = vkEndCommandBuffer(cb);
+            if (r == VK_SUCCESS) {
+                VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+                submit.commandBufferCount = 1;
+                submit.pCommandBuffers = &cb;
+                r = vkQueueSubmit(gpu.queue(), 1, &submit, VK_NULL_HANDLE);
+                if (r == VK_SUCCESS) r = vkQueueWaitIdle(gpu.queue());
+            }
+        }
+        vkDestroyCommandPool(device_, pool, nullptr);  // frees cb
+        check(r, "uploading a table");
+    }
+
+    VkDevice device_;
+    VkImage image_ = VK_NULL_HANDLE;
+    VkDeviceMemory memory_ = VK_NULL_HANDLE;
+    VkImageView view_ = VK_NULL_HANDLE;
+    VkSampler sampler_ = VK_NULL_HANDLE;
+};
+
+// A table's image at its binding in set 0.
+struct ImageBinding {
+    uint32_t binding;
+    const SampledImage* image;
+};
+
+// The compute pipeline over N storage buffers at set 0, bindings 0..N-1, and the sampled
+// images at their bindings, with one command buffer to record its dispatch into.
 class ComputePipeline {
   public:
     ComputePipeline(const Gpu& gpu, const std::vector<uint32_t>& spirv,
-                    const std::vector<const Buffer*>& buffers)
+                    const std::vector<const Buffer*>& buffers,
+                    const std::vector<ImageBinding>& images)
         : device_(gpu.device()) {
         VkShaderModuleCreateInfo smci{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
         smci.codeSize = spirv.size() * sizeof(uint32_t);
@@ -309,6 +453,9 @@ class ComputePipeline {
         for (uint32_t i = 0; i < bindings.size(); ++i)
             bindings[i] = {i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT,
                            nullptr};
+        for (const ImageBinding& image : images)
+            bindings.push_back({image.binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+                                VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
         VkDescriptorSetLayoutCreateInfo dslci{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
         dslci.bindingCount = static_cast<uint32_t>(bindings.size());
         dslci.pBindings = bindings.data();
@@ -327,12 +474,13 @@ class ComputePipeline {
         check(vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &cpci, nullptr, &pipeline_),
               "vkCreateComputePipelines");
 
-        const VkDescriptorPoolSize pool_size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                                             static_cast<uint32_t>(buffers.size())};
+        const VkDescriptorPoolSize pool_sizes[2] = {
+            {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, static_cast<uint32_t>(buffers.size())},
+            {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, static_cast<uint32_t>(images.size())}};
         VkDescriptorPoolCreateInfo dpci{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
         dpci.maxSets = 1;
-        dpci.poolSizeCount = 1;
-        dpci.pPoolSizes = &pool_size;
+        dpci.poolSizeCount = images.empty() ? 1 : 2;
+        dpci.pPoolSizes = pool_sizes;
         check(vkCreateDescriptorPool(device_, &dpci, nullptr, &pool_), "vkCreateDescriptorPool");
         VkDescriptorSetAllocateInfo dsai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
         dsai.descriptorPool = pool_;
@@ -349,6 +497,17 @@ class ComputePipeline {
             writes[i].descriptorCount = 1;
             writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
             writes[i].pBufferInfo = &infos[i];
+        }
+        std::vector<VkDescriptorImageInfo> image_infos;
+        for (const ImageBinding& image : images) image_infos.push_back(image.image->descriptor());
+        for (std::size_t k = 0; k < images.size(); ++k) {
+            VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+            w.dstSet = set_;
+            w.dstBinding = images[k].binding;
+            w.descriptorCount = 1;
+            w.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+            w.pImageInfo = &image_infos[k];
+            writes.push_back(w);
         }
         vkUpdateDescriptorSets(device_, static_cast<uint32_t>(writes.size()), writes.data(), 0,
                                nullptr);
@@ -466,7 +625,8 @@ void write_png(const std::string& path, const uint32_t* rgba, int width, int hei
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::string out = "consumer.png", scene_path = CONSUMER_SCENE, spirv_path = CONSUMER_SPIRV;
+    std::string out = "consumer.png", scene_path = CONSUMER_SCENE, spirv_path = CONSUMER_SPIRV,
+                tables_dir = CONSUMER_TABLES;
     int width = 320, height = 240;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
@@ -474,6 +634,8 @@ int main(int argc, char** argv) {
             scene_path = argv[++i];
         } else if (a == "--spirv" && i + 1 < argc) {
             spirv_path = argv[++i];
+        } else if (a == "--tables" && i + 1 < argc) {
+            tables_dir = argv[++i];
         } else if (a == "--size" && i + 2 < argc) {
             width = std::atoi(argv[++i]);
             height = std::atoi(argv[++i]);
@@ -481,7 +643,8 @@ int main(int argc, char** argv) {
             out = a;
         } else {
             std::fprintf(stderr,
-                         "usage: consumer [OUT.png] [--scene FILE] [--spirv FILE] [--size W H]\n");
+                         "usage: consumer [OUT.png] [--scene FILE] [--spirv FILE] "
+                         "[--tables DIR] [--size W H]\n");
             return a == "--help" ? 0 : 1;
         }
     }
@@ -491,6 +654,7 @@ int main(int argc, char** argv) {
     }
     try {
         const Scene scene = read_scene(scene_path, width, height);
+        const std::vector<Table> tables = read_tables(tables_dir);
         Gpu gpu;
         // Upload: every record as the shader declares it, in host-coherent buffers.
         const Buffer frame(gpu, std::vector<Frame>{scene.frame});
@@ -498,16 +662,27 @@ int main(int argc, char** argv) {
         const Buffer materials(gpu, scene.materials);
         const Buffer objects(gpu, scene.objects);
         const Buffer pixels(gpu, VkDeviceSize(width) * height * sizeof(uint32_t));
+        // The library's tables where its manifest puts them: binding AREALIGHT_BINDING +
+        // binding_offset, render.comp defining AREALIGHT_BINDING after its five buffers.
+        constexpr uint32_t kArealightBinding = 5;
+        std::vector<std::unique_ptr<SampledImage>> images;
+        std::vector<ImageBinding> image_bindings;
+        for (const Table& t : tables) {
+            images.push_back(std::make_unique<SampledImage>(gpu, t));
+            image_bindings.push_back(
+                {kArealightBinding + static_cast<uint32_t>(t.binding_offset), images.back().get()});
+        }
         ComputePipeline pipeline(gpu, read_spirv(spirv_path),
-                                 {&frame, &lights, &materials, &objects, &pixels});
+                                 {&frame, &lights, &materials, &objects, &pixels}, image_bindings);
         constexpr uint32_t kGroup = 8;  // render.comp's local_size_x and _y
         pipeline.run(gpu.queue(), (width + kGroup - 1) / kGroup, (height + kGroup - 1) / kGroup);
         // Read back: the fence has signalled and the memory is coherent.
         const auto* rgba = static_cast<const uint32_t*>(pixels.data());
         write_png(out, rgba, width, height);
         const std::set<uint32_t> colours(rgba, rgba + std::size_t(width) * height);
-        std::printf("consumer: %s, %dx%d on %s, %zu lights, %zu distinct colours\n", out.c_str(),
-                    width, height, gpu.name().c_str(), scene.lights.size(), colours.size());
+        std::printf("consumer: %s, %dx%d on %s, %zu lights, %zu tables, %zu distinct colours\n",
+                    out.c_str(), width, height, gpu.name().c_str(), scene.lights.size(),
+                    tables.size(), colours.size());
         // A shader that returned NaN or nothing gives one colour (or a handful): not an image.
         if (colours.size() < 64) {
             std::fprintf(stderr, "consumer: only %zu distinct colours: the render is broken\n",
@@ -515,6 +690,9 @@ int main(int argc, char** argv) {
             return 4;
         }
     } catch (const BadScene& e) {
+        std::fprintf(stderr, "consumer: error: %s\n", e.what());
+        return 1;
+    } catch (const BadTables& e) {
         std::fprintf(stderr, "consumer: error: %s\n", e.what());
         return 1;
     } catch (const std::exception& e) {

@@ -7,6 +7,9 @@
 // draws the same scene; area lights are not shadowed (the integrals see the whole light).
 layout(local_size_x = 8, local_size_y = 8) in;
 
+// The library's tables (the LTC matrices of its GGX function) follow the five buffers below;
+// main.cpp binds each at AREALIGHT_BINDING + its manifest's binding_offset.
+#define AREALIGHT_BINDING 5
 #include "arealight_scene.glsl"
 
 // The host's layout: every record std430, vec3 values padded to vec4.

@@ -1,0 +1,239 @@
+// The shading library from a renderer's side (CONTRACT.md 5): tests/data/contract_user.comp,
+// written against the contract alone with its own buffer layout, includes a library of four
+// polygon variants (one with tables), compiled by compile_glsl with an include folder and run
+// on VulkanRunner; per shading point it must give what Evaluator::run (the validation kernel)
+// gives for each variant. The same shader over two libraries included together, after
+// declarations of the names arealight uses internally (real, rvec3, AlCase), gives the same.
+#include <fmt/format.h>
+
+#include <catch2/catch.hpp>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "arealight/compiler.hpp"
+#include "arealight/evaluator.hpp"
+#include "arealight/generator.hpp"
+#include "arealight/vulkan_runner.hpp"
+#include "eval_support.hpp"
+#include "microfacet_cases.hpp"
+#include "scratch_folder.hpp"
+
+namespace arealight::test {
+namespace {
+
+// contract_user.comp's material models: which arealight_polygon_<dist> a point calls.
+struct UserVariant {
+    const char* name;
+    int model;  // kGgx, kPhong, kBeckmann, kBlinn in the shader
+    Distribution dist;
+};
+const UserVariant kUserVariants[] = {
+    {"dist=ggx,method=ltc,light=polygon", 0, Distribution::Ggx},
+    {"dist=phong,method=lorentz,light=polygon,sided=any", 1, Distribution::Phong},
+    {"dist=beckmann,method=exact,light=polygon,precision=fp64", 2, Distribution::Beckmann},
+    {"dist=blinn,method=pearson,light=polygon", 3, Distribution::Blinn},
+};
+constexpr int kCasesPerVariant = 40;
+
+// contract_user.comp's ShadingPoint, std430.
+struct ShadingPoint {
+    std::int32_t info[4];  // corner count, two-sided, model, unused
+    float corners[8][4];
+    float position[3];
+    float roughness;
+    float normal[3];
+    float fresnel0;
+    float to_eye[3];
+    float unused;
+};
+static_assert(sizeof(ShadingPoint) == 192, "contract_user.comp's std430 ShadingPoint");
+
+void put(const Vec3& a, float* dst) {
+    for (int k = 0; k < 3; ++k) dst[k] = static_cast<float>(a[k]);
+}
+
+ShadingPoint shading_point(const Case& c, int model) {
+    ShadingPoint p{};
+    p.info[0] = static_cast<std::int32_t>(c.light.vertices.size());
+    p.info[1] = c.light.two_sided ? 1 : 0;
+    p.info[2] = model;
+    for (std::size_t k = 0; k < c.light.vertices.size(); ++k)
+        put(c.light.vertices[k], p.corners[k]);
+    put(c.p, p.position);
+    put(c.n, p.normal);
+    put(c.v, p.to_eye);
+    const bool exponent = c.material.distribution == Distribution::Phong ||
+                          c.material.distribution == Distribution::Blinn;
+    p.roughness = static_cast<float>(exponent ? c.material.exponent : c.material.alpha);
+    p.fresnel0 = static_cast<float>(c.material.f0);
+    return p;
+}
+
+// Seeded random polygons per variant (microfacet_cases.hpp; phong takes blinn's exponents),
+// only those the variant computes, so that the evaluator returns one result per case.
+CaseSet user_cases(const UserVariant& u) {
+    const Distribution from = u.dist == Distribution::Phong ? Distribution::Blinn : u.dist;
+    CaseSet all = random_microfacet_polygons(4242 + u.model, kCasesPerVariant, from,
+                                             std::string(to_string(u.dist)) + "-");
+    CaseSet set;
+    for (auto& c : all.cases) {
+        c.material.distribution = u.dist;
+        if (case_applies(variant(u.name), c)) set.cases.push_back(c);
+    }
+    return set;
+}
+
+std::string read_text(const std::string& path) {
+    std::ifstream in(path);
+    REQUIRE(in);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::string library(const std::vector<Variant>& variants) {
+    std::string why;
+    auto text = generate_library(variants, Language::Glsl, LibraryOptions{},
+                                 [&](const Diagnostic& d) { why += d.message + "\n"; });
+    INFO(why);
+    REQUIRE(text);
+    return *text;
+}
+
+// contract_user.comp compiled with `dir` as its include folder (which must hold
+// contract_user_library.glsl) and run over `points`: 2 floats (diffuse, specular) per point.
+std::vector<float> run_contract_user(const ScratchFolder& dir,
+                                     const std::vector<ShadingPoint>& points,
+                                     const std::vector<const Texture2D*>& textures) {
+    const std::string shader = std::string(AREALIGHT_TEST_DATA) + "/contract_user.comp";
+    std::string why;
+    const DiagnosticConsumer diag = [&](const Diagnostic& d) {
+        why += d.file + ":" + std::to_string(d.line) + ": " + d.message + "\n";
+    };
+    CompileOptions options;
+    options.includes = true;
+    options.include_dirs = {dir / ""};
+    const auto spirv = compile_glsl(read_text(shader), shader, options, diag);
+    INFO(why);
+    REQUIRE(spirv);
+    static auto runner = VulkanRunner::create("", diag);
+    REQUIRE(runner);
+    std::vector<float> out;
+    REQUIRE(runner->run(*spirv, points.data(), points.size() * sizeof(ShadingPoint), points.size(),
+                        out, 2, diag, nullptr, textures));
+    REQUIRE(out.size() == 2 * points.size());
+    return out;
+}
+
+std::uint32_t bits(float x) {
+    std::uint32_t b;
+    std::memcpy(&b, &x, sizeof b);
+    return b;
+}
+
+// Every point's diffuse and specular in `got` against the validation kernel's: the count
+// of values whose bits differ, each named in the report.
+int compare_bits(const std::vector<float>& got, const std::vector<ResultSet>& expected,
+                 std::string& report) {
+    int differing = 0;
+    std::size_t point = 0;
+    for (const auto& set : expected) {
+        for (const auto& r : set.results) {
+            const float want[2] = {static_cast<float>(*r.diffuse), static_cast<float>(*r.specular)};
+            for (int q = 0; q < 2; ++q) {
+                const float x = got[2 * point + q];
+                if (bits(x) == bits(want[q])) continue;
+                if (++differing <= 8)
+                    report += fmt::format("{} {} {}: {:.9g}, eval {:.9g}\n", set.variant, r.id,
+                                          q ? "specular" : "diffuse", x, want[q]);
+            }
+            ++point;
+        }
+    }
+    return differing;
+}
+
+struct UserRun {
+    std::vector<ShadingPoint> points;
+    std::vector<const Texture2D*> textures;  // library order: binding AREALIGHT_BINDING + k
+    std::vector<ResultSet> expected;         // Evaluator::run, vulkan backend, per variant
+    std::vector<Variant> variants;
+};
+
+UserRun prepare() {
+    UserRun run;
+    for (const auto& u : kUserVariants) {
+        const Variant v = variant(u.name);
+        run.variants.push_back(v);
+        const CaseSet cases = user_cases(u);
+        REQUIRE(cases.cases.size() >= kCasesPerVariant / 2);
+        for (const auto& c : cases.cases) run.points.push_back(shading_point(c, u.model));
+        for (const Texture2D* t : variant_textures(v)) run.textures.push_back(t);
+        run.expected.push_back(arealight::test::run(Backend::Vulkan, u.name, cases));
+        REQUIRE(run.expected.back().results.size() == cases.cases.size());
+    }
+    return run;
+}
+
+// contract_user.comp over `dir`'s contract_user_library.glsl must give, bit for bit, the
+// validation kernel's diffuse and specular at every point of `run`.
+void check_contract_user(const ScratchFolder& dir, const UserRun& run) {
+    const auto got = run_contract_user(dir, run.points, run.textures);
+    std::string report;
+    const int differing = compare_bits(got, run.expected, report);
+    INFO(run.points.size() << " points, " << differing << " values differ in their bits\n"
+                           << report);
+    CHECK(differing == 0);
+}
+
+}  // namespace
+
+TEST_CASE("a shader written against CONTRACT 5 alone gives arealight eval's values bit for bit",
+          "[vulkan][library]") {
+    const UserRun run = prepare();
+    REQUIRE(run.textures.size() == 2);  // the ggx LTC matrix and amplitude
+    ScratchFolder dir("contract_user");
+    dir.write("contract_user_library.glsl", library(run.variants));
+    check_contract_user(dir, run);
+}
+
+TEST_CASE(
+    "two libraries included together, after a renderer's own real, rvec3 and AlCase, "
+    "give the same values",
+    "[vulkan][library]") {
+    const UserRun run = prepare();
+    ScratchFolder dir("contract_user_two");
+    // Two libraries of distinct (light, dist): the types once, each function once.
+    dir.write("ggx_phong.glsl", library({run.variants[0], run.variants[1]}));
+    dir.write("beckmann_blinn.glsl", library({run.variants[2], run.variants[3]}));
+    // Names the templates use before the library renames them, declared first and used after
+    // both includes: a macro left defined (real -> double) or a type declared again breaks
+    // the compile.
+    dir.write("contract_user_library.glsl", R"(
+struct AlCase { vec3 real; float rvec3; };
+float real(float x) { return x; }
+const vec3 rvec3 = vec3(1.0);
+#include "ggx_phong.glsl"
+#include "beckmann_blinn.glsl"
+float renderer_uses_its_names() {
+    AlCase c = AlCase(rvec3, real(2.0));
+    return c.real.x + c.rvec3;
+}
+)");
+    check_contract_user(dir, run);
+}
+
+TEST_CASE("a library holds one variant per light type and distribution", "[library]") {
+    std::string why;
+    const auto text = generate_library({variant("dist=ggx,method=ltc,light=polygon"),
+                                        variant("dist=ggx,method=pearson,light=polygon")},
+                                       Language::Glsl, LibraryOptions{},
+                                       [&](const Diagnostic& d) { why += d.message; });
+    INFO(why);
+    CHECK_FALSE(text);
+    CHECK(why.find("arealight_polygon_ggx") != std::string::npos);
+}
+
+}  // namespace arealight::test
