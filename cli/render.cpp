@@ -12,6 +12,7 @@
 #include "arealight/png_image.hpp"
 #include "arealight/render.hpp"
 #include "arealight/tone_map.hpp"
+#include "print_diagnostic.hpp"
 #include "progress.hpp"
 
 namespace arealight::cli {
@@ -19,13 +20,6 @@ namespace arealight::cli {
 namespace {
 
 enum Exit { kOk = 0, kBadInput = 1, kRuntime = 3 };
-
-void print_diagnostic(const Diagnostic& d) {
-    if (d.severity == Severity::Error)
-        fmt::print(stderr, "arealight: error: {}\n", d.message);
-    else
-        fmt::print(stderr, "arealight: {}: {}\n", to_string(d.severity), d.message);
-}
 
 // IMAGE.png -> IMAGE_diff.png (any other name: NAME_diff.png).
 std::string default_diff_path(const std::string& out) {
@@ -52,8 +46,8 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
     auto* variant = cmd->add_option(
         "--variant", a.variants,
         "variant for the lights and materials of its dist and light (repeatable, one per "
-        "pair); default: the scene's quality.method, else method=ltc for ggx and "
-        "method=pearson for phong, blinn, beckmann");
+        "pair); default: the scene's selection, as 'arealight generate --scene' makes it "
+        "(quality.method, quality.max_error, default 0.02, by the measured data built in)");
     cmd->add_flag("--reference", a.reference,
                   "shade with the oracle (arealight reference) instead of a variant")
         ->excludes(variant);
@@ -90,17 +84,17 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
 
 int run_render(const RenderArgs& a) {
     const auto start = std::chrono::steady_clock::now();
-    auto scene = read_render_scene(a.scene, print_diagnostic);
+    auto scene = read_render_scene(a.scene, print_scene_diagnostic);
     if (!scene) return kBadInput;
     RenderOptions opt;
     opt.width = a.size[0];
     opt.height = a.size[1];
     std::set<std::pair<LightType, Distribution>> given;
     for (const auto& name : a.variants) {
-        auto v = parse_variant(name, print_diagnostic);
+        auto v = parse_variant(name, print_scene_diagnostic);
         if (!v) return kBadInput;
         if (!given.insert({v->light, v->dist}).second) {
-            print_diagnostic({Severity::Error, "", 0,
+            print_scene_diagnostic({Severity::Error, "", 0,
                               fmt::format("--variant {}: a variant for dist={},light={} was "
                                           "already given",
                                           name, to_string(v->dist), to_string(v->light))});
@@ -108,13 +102,25 @@ int run_render(const RenderArgs& a) {
         }
         opt.variants.push_back(*v);
     }
+    // Every other pair of the scene takes its selection, chosen here rather than in the
+    // rendering so that a quality no measured variant meets is bad input, as it is to
+    // generate --scene, and is reported before minutes of work.
+    for (const auto& l : scene->lights) {
+        for (const auto& m : scene->materials) {
+            if (a.reference || !given.insert({l.type, m.distribution}).second) continue;
+            auto s = render_variant(*scene, l.type, m.distribution, shipped_quality(),
+                                    print_scene_diagnostic);
+            if (!s) return kBadInput;
+            opt.variants.push_back(s->variant);
+        }
+    }
     std::optional<LinearImage> ref;
     if (!a.compare.empty()) {
-        ref = read_pfm(a.compare, print_diagnostic);
+        ref = read_pfm(a.compare, print_scene_diagnostic);
         if (!ref) return kBadInput;
         // Before the rendering, which may take minutes.
         if (ref->width != a.size[0] || ref->height != a.size[1]) {
-            print_diagnostic({Severity::Error, a.compare, 0,
+            print_scene_diagnostic({Severity::Error, a.compare, 0,
                               fmt::format("{}: is {}x{}, the rendering (--size) {}x{}", a.compare,
                                           ref->width, ref->height, a.size[0], a.size[1])});
             return kBadInput;
@@ -130,12 +136,12 @@ int run_render(const RenderArgs& a) {
         EvalOptions eo;
         eo.backend = a.backend == "cpu" ? Backend::Cpu : Backend::Vulkan;
         eo.device = a.device;
-        evaluator = Evaluator::create(eo, print_diagnostic);
+        evaluator = Evaluator::create(eo, print_scene_diagnostic);
         if (!evaluator) return kRuntime;
     }
     ProgressPrinter progress("render reference", "cases");
     RenderStats stats;
-    auto image = render(*scene, opt, evaluator.get(), print_diagnostic,
+    auto image = render(*scene, opt, evaluator.get(), print_scene_diagnostic,
                         [&](std::size_t d, std::size_t t) { progress(d, t); }, &stats);
     if (!image) return kRuntime;
 
@@ -143,24 +149,24 @@ int run_render(const RenderArgs& a) {
     ErrorScale scale;
     scale.floor = a.floor;
     if (ref) {
-        err = compare_images(*image, *ref, scale, print_diagnostic);
+        err = compare_images(*image, *ref, scale, print_scene_diagnostic);
         if (!err) return kBadInput;
     }
     // Every output is encoded before the first is written, so that a failure to encode
     // leaves none of them behind.
     const std::string diff = a.diff.empty() ? default_diff_path(a.out) : a.diff;
     std::vector<std::pair<std::string, std::string>> files;
-    auto png = encode_png(tone_map(*image, a.exposure), a.out, print_diagnostic);
+    auto png = encode_png(tone_map(*image, a.exposure), a.out, print_scene_diagnostic);
     if (!png) return kRuntime;
     files.emplace_back(a.out, std::move(*png));
     if (!a.linear.empty()) files.emplace_back(a.linear, format_pfm(*image));
     if (ref) {
-        auto diff_png = encode_png(error_image(*image, *ref, scale), diff, print_diagnostic);
+        auto diff_png = encode_png(error_image(*image, *ref, scale), diff, print_scene_diagnostic);
         if (!diff_png) return kRuntime;
         files.emplace_back(diff, std::move(*diff_png));
     }
     for (const auto& [path, bytes] : files)
-        if (!write_file_atomic(path, bytes, print_diagnostic)) return kRuntime;
+        if (!write_file_atomic(path, bytes, print_scene_diagnostic)) return kRuntime;
 
     const double total =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -1,9 +1,6 @@
-// The renderer's scene reader: camera and objects here; lights and materials through the
-// case reader (parse_cases), so that they are validated exactly as CONTRACT 3 fields are.
-//
-// Stand-in until the core scene reader (read_scene, CONTRACT 7) lands: each light and
-// each material is wrapped into a synthetic case and its messages renamed from
-// "case 'light 1': field 'light.vertices'" to "light 1: field 'vertices'".
+// The renderer's scene reader: lights, materials and quality through the core scene
+// reader (parse_scene, CONTRACT 7), so that they are validated exactly as a case's fields
+// are; camera, objects and each light's intensity here, in the same message format.
 #include "arealight/render_scene.hpp"
 
 #include <fmt/format.h>
@@ -11,8 +8,8 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "arealight/case_io.hpp"
 #include "arealight/read_file.hpp"
+#include "case_fields.hpp"
 
 namespace arealight {
 namespace {
@@ -24,18 +21,13 @@ constexpr double kMaxCoordinate = 1e15;
 
 class SceneReader {
   public:
-    SceneReader(std::string file, const DiagnosticConsumer& diag)
-        : file_(std::move(file)), diag_(diag) {}
+    SceneReader(std::string file, const DiagnosticConsumer& diag) : rep_(std::move(file), diag) {}
 
     bool fail(const std::string& where, const std::string& field, const std::string& reason) {
-        ++errors_;
-        std::string msg = file_ + ": ";
-        if (!where.empty()) msg += where + ": ";
-        if (!field.empty()) msg += "field '" + field + "': ";
-        if (diag_) diag_({Severity::Error, file_, 0, msg + reason});
+        rep_.error(where, field, reason);
         return false;
     }
-    int errors() const { return errors_; }
+    int errors() const { return rep_.errors(); }
 
     bool number(const json& obj, const char* key, const std::string& where, double& out) {
         auto it = obj.find(key);
@@ -159,62 +151,19 @@ class SceneReader {
         }
     }
 
-    // The lights' and materials' CONTRACT 3 fields, each wrapped in a case that is valid
-    // but for it, so that the case reader's messages point at that one item.
-    void read_lights_and_materials(const json& doc, RenderScene& scene) {
-        const json* lights = array(doc, "lights");
-        const json* materials = array(doc, "materials");
-        if (!lights || !materials) return;
-        const json some_light = {{"type", "polygon"},
-                                 {"vertices", {{0, 0, 1}, {1, 0, 1}, {0, 1, 1}}}};
-        const json some_material = {{"distribution", "phong"}, {"exponent", 1}};
-        json cases = json::array();
-        auto wrap = [&](const std::string& id, const json& light, const json& material) {
-            cases.push_back({{"id", id},
-                             {"p", {0, 0, 0}},
-                             {"n", {0, 0, 1}},
-                             {"v", {0, 0, 1}},
-                             {"light", light},
-                             {"material", material}});
-        };
-        for (std::size_t i = 0; i < lights->size(); ++i)
-            wrap(fmt::format("light {}", i), (*lights)[i], some_material);
-        for (std::size_t i = 0; i < materials->size(); ++i)
-            wrap(fmt::format("material {}", i), some_light, (*materials)[i]);
-        const json wrapped = {{"format", "arealight-cases/1"}, {"cases", cases}};
-        auto renamed = [&](const Diagnostic& d) {
-            ++errors_;
-            if (!diag_) return;
-            Diagnostic r = d;
-            for (const char* kind : {"light", "material"}) {
-                const std::string from = fmt::format("case '{} ", kind);
-                const auto at = r.message.find(from);
-                if (at == std::string::npos) continue;
-                r.message.replace(at, from.size(), std::string(kind) + " ");
-                const auto quote = r.message.find("': field '", at);
-                if (quote != std::string::npos) r.message.erase(quote, 1);
-                const std::string prefix = fmt::format("field '{}.", kind);
-                const auto field = r.message.find(prefix, at);
-                if (field != std::string::npos)
-                    r.message.replace(field, prefix.size(), "field '");
-            }
-            diag_(r);
-        };
-        auto set = parse_cases(wrapped.dump(), file_, renamed);
-        if (!set) return;
+    // Each light's optional uniform radiance; its CONTRACT 3 fields are parse_scene's.
+    void read_intensities(const json& doc, RenderScene& scene) {
+        auto lights = doc.find("lights");
+        if (lights == doc.end() || !lights->is_array()) return;
         for (std::size_t i = 0; i < lights->size(); ++i) {
-            scene.lights.push_back(set->cases[i].light);
             double intensity = 1.0;
             const json& L = (*lights)[i];
-            if (L.find("intensity") != L.end() &&
-                number(L, "intensity", fmt::format("light {}", i), intensity) &&
-                !(intensity >= 0))
-                fail(fmt::format("light {}", i), "intensity",
-                     fmt::format("{:g} is negative", intensity));
+            const std::string where = fmt::format("light {}", i);
+            if (L.is_object() && L.find("intensity") != L.end() &&
+                number(L, "intensity", where, intensity) && !(intensity >= 0))
+                fail(where, "intensity", fmt::format("{:g} is negative", intensity));
             scene.intensities.push_back(intensity);
         }
-        for (std::size_t i = 0; i < materials->size(); ++i)
-            scene.materials.push_back(set->cases[lights->size() + i].material);
     }
 
     const json* array(const json& doc, const char* key) {
@@ -226,49 +175,24 @@ class SceneReader {
         return &*it;
     }
 
-    void read_method(const json& doc, RenderScene& scene) {
-        auto q = doc.find("quality");
-        if (q == doc.end() || !q->is_object()) return;
-        auto m = q->find("method");
-        if (m == q->end()) return;
-        if (!m->is_string())
-            fail("quality", "method", "must be a string");
-        else
-            scene.method = m->get<std::string>();
-    }
-
   private:
-    std::string file_;
-    const DiagnosticConsumer& diag_;
-    int errors_ = 0;
+    io_detail::Reporter rep_;
 };
 
 }  // namespace
 
 std::optional<RenderScene> parse_render_scene(const std::string& text, const std::string& name,
                                               const DiagnosticConsumer& diag) {
-    SceneReader r(name, diag);
-    json doc;
-    try {
-        doc = json::parse(text);
-    } catch (const json::exception& e) {
-        r.fail("", "", std::string("invalid JSON: ") + e.what());
-        return std::nullopt;
-    }
-    if (!doc.is_object()) {
-        r.fail("", "format", "the file must be a JSON object");
-        return std::nullopt;
-    }
+    auto core = parse_scene(text, name, diag);
+    // parse_scene has said what is wrong with a file that is no scene at all.
+    const json doc = json::parse(text, nullptr, false);
+    if (!doc.is_object()) return std::nullopt;
     auto f = doc.find("format");
-    if (f == doc.end() || *f != "arealight-scene/1") {
-        r.fail("", "format",
-               f == doc.end() ? "missing (expected \"arealight-scene/1\")"
-                              : "is " + f->dump() + ", expected \"arealight-scene/1\"");
-        return std::nullopt;
-    }
+    if (f == doc.end() || *f != "arealight-scene/1") return std::nullopt;
     RenderScene scene;
-    r.read_lights_and_materials(doc, scene);
-    r.read_method(doc, scene);
+    if (core) static_cast<Scene&>(scene) = std::move(*core);
+    SceneReader r(name, diag);
+    r.read_intensities(doc, scene);
     r.read_camera(doc, scene.camera);
     // Indices are checked against the file's list even when an item of it is invalid, so
     // that one bad material does not make every object's index look wrong too.
@@ -281,7 +205,7 @@ std::optional<RenderScene> parse_render_scene(const std::string& text, const std
             scene.objects.push_back(o);
         }
     }
-    if (r.errors() > 0) return std::nullopt;
+    if (!core || r.errors() > 0) return std::nullopt;
     return scene;
 }
 

@@ -29,20 +29,30 @@ std::string describe(const Light& L) {
 
 }  // namespace
 
-std::optional<Variant> default_render_variant(LightType light, Distribution dist,
-                                              const std::string& scene_method,
+std::optional<SelectedVariant> render_variant(const Scene& scene, LightType light,
+                                              Distribution dist, const QualityData& measured,
                                               const DiagnosticConsumer& diag) {
-    const std::string fixed = fmt::format("dist={},light={}", to_string(dist), to_string(light));
-    const char* method = dist == Distribution::Ggx ? "ltc" : "pearson";
-    if (!scene_method.empty()) {
-        if (auto v = parse_variant(fixed + ",method=" + scene_method, {})) return v;
-        if (diag)
-            diag({Severity::Note, "", 0,
-                  fmt::format("quality.method {} has no variant for {}; using method={}",
-                              scene_method, fixed, method)});
+    // The pair's part of the scene: its selection depends on nothing else (the lights of
+    // its type, the scene's quality), and the other pairs' problems, e.g. those a
+    // --variant covers, are not this one's.
+    Scene part;
+    part.max_error = scene.max_error;
+    part.method = scene.method;
+    for (const auto& l : scene.lights)
+        if (l.type == light) part.lights.push_back(l);
+    for (const auto& m : scene.materials)
+        if (m.distribution == dist) part.materials.push_back(m);
+    auto selected = select_variants(part, measured, diag);
+    if (!selected) return std::nullopt;
+    if (selected->size() != 1) {
+        error(diag, fmt::format("render: the selection for light={}, dist={} gave {} variants",
+                                to_string(light), to_string(dist), selected->size()));
+        return std::nullopt;
     }
-    auto v = parse_variant(fixed + ",method=" + method, {});
-    if (!v) error(diag, fmt::format("no variant renders {} (arealight variants lists them)", fixed));
+    const SelectedVariant& v = selected->front();
+    if (diag)
+        diag({Severity::Note, "", 0,
+              fmt::format("{}: the scene's selection, {}", canonical_name(v.variant), v.why)});
     return v;
 }
 
@@ -119,8 +129,12 @@ std::optional<LinearImage> render(const RenderScene& scene, const RenderOptions&
             std::optional<Variant> v;
             for (const auto& given : opt.variants)
                 if (given.light == key.first && given.dist == key.second) v = given;
-            if (!v) v = default_render_variant(key.first, key.second, scene.method, diag);
-            if (!v) return std::nullopt;
+            if (!v) {
+                auto s = render_variant(scene, key.first, key.second,
+                                        opt.quality ? *opt.quality : shipped_quality(), diag);
+                if (!s) return std::nullopt;
+                v = s->variant;
+            }
             for (std::size_t i = 0; i < b.first.cases.size(); ++i) {
                 if (case_applies(*v, b.first.cases[i])) continue;
                 const int l = b.second[i].light;

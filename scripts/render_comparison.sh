@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Renders examples/scene.json with the oracle, LTC, the paper's method and the exact
-# rule, each method with its error image against the oracle, into docs/render/ with
-# a table of error and time (docs/render/render.md). Needs a built build/arealight.
+# Renders examples/scene.json with the oracle, LTC, the paper's method, the exact rule
+# and the scene's own selection (no --variant: what `generate --scene` would ship), each
+# method with its error image against the oracle, into docs/render/ with a table of
+# error and time (docs/render/render.md). Needs a built build/arealight.
 #
 #   bash scripts/render_comparison.sh                 # everything (the oracle: ~2 min on 2 cores)
 #   REUSE_REFERENCE=1 bash scripts/render_comparison.sh   # keep out/render/reference.pfm
@@ -34,6 +35,7 @@ methods=(
   "ltc|LTC|--variant dist=ggx,method=ltc,light=polygon --variant dist=phong,method=ltc,light=polygon"
   "pearson|the paper's method (pearson)|--variant dist=ggx,method=pearson,light=polygon --variant dist=phong,method=pearson,light=polygon"
   "exact|exact (fp64 quadrature)|--variant dist=ggx,method=exact,light=polygon --variant dist=phong,method=exact,light=polygon"
+  "selected|the scene's selection (default)|"
 )
 for m in "${methods[@]}"; do
   IFS='|' read -r name title opts <<<"$m"

@@ -25,9 +25,25 @@ if(NOT kept STREQUAL "precious")
   message(FATAL_ERROR "output was modified on bad input")
 endif()
 
+# A quality.method no variant has: bad input, named, before any rendering.
+string(REPLACE "\"format\": \"arealight-scene/1\","
+       "\"format\": \"arealight-scene/1\", \"quality\": {\"method\": \"magic\"}," magic "${scene}")
+file(WRITE "${WORK}/magic.json" "${magic}")
+expect_exit(1 "${AREALIGHT}" render --scene "${WORK}/magic.json" --out "${WORK}/image.png" --backend cpu)
+if(NOT LAST_ERR MATCHES "quality.method: no variant has method 'magic'")
+  message(FATAL_ERROR "unknown quality.method: ${LAST_ERR}")
+endif()
+# ... unless --variant covers every pair.
+expect_exit(0 "${AREALIGHT}" render --scene "${WORK}/magic.json" --out "${WORK}/magic.png" --backend cpu
+            --size 8 6 --variant dist=ggx,method=ltc,light=polygon --variant dist=phong,method=ltc,light=polygon)
+
 # A render compared with its own linear image: zero error, and an error image.
 set(small --scene "${SOURCE}/../examples/scene.json" --size 24 18 --backend cpu)
 expect_exit(0 "${AREALIGHT}" render ${small} --out "${WORK}/a.png" --linear "${WORK}/a.pfm")
+# Without --variant, the scene's selection, named with the reason it was chosen.
+if(NOT LAST_ERR MATCHES "note: dist=ggx,method=[^ ]*: the scene's selection, cheapest with error <= 0.02")
+  message(FATAL_ERROR "no note on the selected variant: ${LAST_ERR}")
+endif()
 expect_exit(0 "${AREALIGHT}" render ${small} --out "${WORK}/b.png" --compare "${WORK}/a.pfm")
 if(NOT LAST_OUT MATCHES "error: relL2 0.000e\\+00" OR NOT EXISTS "${WORK}/b_diff.png")
   message(FATAL_ERROR "self-comparison: ${LAST_OUT}")

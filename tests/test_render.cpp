@@ -14,6 +14,7 @@
 #include "arealight/raycast.hpp"
 #include "arealight/render.hpp"
 #include "arealight/render_scene.hpp"
+#include "arealight/scene_select.hpp"
 #include "arealight/tone_map.hpp"
 
 using namespace arealight;
@@ -92,8 +93,8 @@ TEST_CASE("render scene: camera, objects, lights and materials are read", "[rend
 }
 
 TEST_CASE("render scene: errors name the file, the item and the field", "[render]") {
-    // Each row: a substitution into kScene and the message it must produce. Lights and
-    // materials go through the case reader, renamed to the scene's items.
+    // Each row: a substitution into kScene and the message it must produce. Lights,
+    // materials and quality are read_scene's, the rest the renderer's.
     struct Row {
         const char *from, *to, *expected;
     };
@@ -122,6 +123,9 @@ TEST_CASE("render scene: errors name the file, the item and the field", "[render
          "convex"},
         {R"("alpha": 0.3)", R"("alpha": 3)",
          "scene.json: material 0: field 'alpha': 3 is outside [0.001, 1]"},
+        {R"("format": "arealight-scene/1",)",
+         R"("format": "arealight-scene/1", "quality": {"max_error": -1},)",
+         "scene.json: field 'quality.max_error': -1 is not a positive number"},
         {R"("format": "arealight-scene/1")", R"("format": "arealight-cases/1")",
          "scene.json: field 'format': is \"arealight-cases/1\", expected \"arealight-scene/1\""},
     };
@@ -314,4 +318,117 @@ TEST_CASE("render: a variant that does not fit a light is an error", "[render]")
     INFO(c.all());
     CHECK(c.has("variant dist=phong,method=pearson,light=polygon,verts=3 does not apply to "
                 "light 0 (a one-sided polygon of 4 vertices)"));
+}
+
+namespace {
+
+MeasuredVariant measured(const std::string& name, double error, std::size_t x86) {
+    MeasuredVariant m;
+    m.variant = name;
+    m.error_rel_l2 = error;
+    m.x86_instructions = x86;
+    return m;
+}
+
+// The test's own measured data for the Phong polygon pair: LTC cheap and coarse, pearson
+// dearer and finer.
+QualityData two_phong_methods() {
+    QualityData q;
+    q.variants.push_back(measured("dist=phong,method=ltc,light=polygon", 0.05, 100));
+    q.variants.push_back(measured("dist=phong,method=pearson,light=polygon", 0.01, 500));
+    return q;
+}
+
+}  // namespace
+
+TEST_CASE("render: an uncovered pair takes the scene's selection", "[render]") {
+    RenderScene s = scene_or_fail(kScene);
+    const QualityData q = two_phong_methods();
+    struct Want {
+        std::optional<double> max_error;
+        Method method;
+    };
+    // Without quality the bound is kDefaultMaxError (0.02): only pearson meets it.
+    for (const Want& w : {Want{std::nullopt, Method::Pearson}, Want{0.1, Method::Ltc},
+                          Want{0.001, Method::Pearson}}) {
+        s.max_error = w.max_error;
+        Collect c;
+        auto v = render_variant(s, LightType::Polygon, Distribution::Phong, q, c.consumer());
+        INFO("max_error " << w.max_error.value_or(-1) << "\n" << c.all());
+        REQUIRE(v);
+        CHECK(v->variant.method == w.method);
+        // One one-sided and one two-sided light: the variant must take both.
+        CHECK(v->variant.sided == Sided::Any);
+    }
+    // quality.method alone: that method, whatever the data says.
+    s.max_error.reset();
+    s.method = "ltc";
+    Collect c;
+    auto v = render_variant(s, LightType::Polygon, Distribution::Phong, q, c.consumer());
+    INFO(c.all());
+    REQUIRE(v);
+    CHECK(v->variant.method == Method::Ltc);
+}
+
+TEST_CASE("render: the selection is generate --scene's, pair by pair", "[render]") {
+    for (const char* quality : {"", R"("quality": {"max_error": 0.005},)",
+                                R"("quality": {"method": "pearson"},)"}) {
+        std::string text = kScene;
+        text.insert(text.find('{') + 1, quality);
+        const RenderScene s = scene_or_fail(text);
+        Collect c;
+        auto all = select_variants(s, shipped_quality(), c.consumer());
+        INFO(quality << "\n" << c.all());
+        REQUIRE(all);
+        REQUIRE(all->size() == 2);
+        for (const auto& want : *all) {
+            auto got = render_variant(s, want.variant.light, want.variant.dist,
+                                      shipped_quality(), c.consumer());
+            REQUIRE(got);
+            CHECK(canonical_name(got->variant) == canonical_name(want.variant));
+            CHECK(got->why == want.why);
+        }
+    }
+}
+
+TEST_CASE("render: the default variants are the selection, --variant overrides", "[render]") {
+    RenderScene s = scene_or_fail(kScene);
+    RenderOptions opt;
+    opt.width = 8;
+    opt.height = 6;
+    EvalOptions eo;
+    eo.backend = Backend::Cpu;
+    Collect c;
+    auto ev = Evaluator::create(eo, c.consumer());
+    REQUIRE(ev);
+    const QualityData q = two_phong_methods();
+    opt.quality = &q;
+    // The test data has no GGX row, so GGX must be given; Phong comes from the data.
+    auto ggx = parse_variant("dist=ggx,method=exact,light=polygon", c.consumer());
+    REQUIRE(ggx);
+    opt.variants.push_back(*ggx);
+    s.max_error = 0.1;
+    RenderStats stats;
+    REQUIRE(render(s, opt, ev.get(), c.consumer(), {}, &stats));
+    INFO(c.all());
+    REQUIRE(stats.variants.size() == 2);
+    CHECK(stats.variants[0].find("dist=phong,method=ltc,light=polygon") == 0);
+    CHECK(stats.variants[1] == "dist=ggx,method=exact,light=polygon");
+
+    // Without the GGX --variant the selection fails on the pair the data lacks.
+    opt.variants.clear();
+    Collect c2;
+    CHECK_FALSE(render(s, opt, ev.get(), c2.consumer()));
+    INFO(c2.all());
+    CHECK(c2.has("light=polygon, dist=ggx: no measured variant in the quality data (arealight "
+                 "quality regenerates it from the reports)"));
+
+    // A method no variant has fails the selection, but not pairs every --variant covers.
+    s.method = "magic";
+    auto phong = parse_variant("dist=phong,method=exact,light=polygon", c.consumer());
+    REQUIRE(phong);
+    opt.variants = {*ggx, *phong};
+    Collect c3;
+    CHECK(render(s, opt, ev.get(), c3.consumer()));
+    INFO(c3.all());
 }

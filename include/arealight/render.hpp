@@ -14,15 +14,19 @@
 #include "arealight/evaluator.hpp"
 #include "arealight/image.hpp"
 #include "arealight/reference.hpp"
+#include "arealight/quality.hpp"
 #include "arealight/render_scene.hpp"
+#include "arealight/scene_select.hpp"
 #include "arealight/variant.hpp"
 
 namespace arealight {
 
 struct RenderOptions {
     int width = 320, height = 240;
-    // At most one per (light type, distribution); the rest take default_render_variant.
+    // At most one per (light type, distribution); the rest take render_variant's choice.
     std::vector<Variant> variants;
+    // The measured data the rest are selected by; null: shipped_quality().
+    const QualityData* quality = nullptr;
     bool reference = false;  // the oracle instead of the Evaluator
     ReferenceOptions reference_options;
 };
@@ -34,18 +38,18 @@ struct RenderStats {
     std::size_t unconverged = 0;       // oracle cases its evaluation budget stopped
 };
 
-// The variant for a (light type, distribution) when none is given: the scene's
-// quality.method if that combination exists (a note says when it does not), else method=ltc for ggx (what README's
-// method guide recommends to renderers) and method=pearson (the paper's best fitted
-// peak method) for phong, blinn and beckmann. nullopt with a diagnostic naming the
-// combination when it has no implementation.
-std::optional<Variant> default_render_variant(LightType light, Distribution dist,
-                                              const std::string& scene_method,
+// The variant for a (light type, distribution) of the scene that no --variant covers:
+// the scene's own selection, exactly what `arealight generate --scene` puts in its library
+// (select_variants: quality.method, quality.max_error or kDefaultMaxError, specialised to
+// the sidedness and largest polygon of the scene's lights of that type), named in a note
+// with why it was chosen. nullopt after select_variants' errors.
+std::optional<SelectedVariant> render_variant(const Scene& scene, LightType light,
+                                              Distribution dist, const QualityData& measured,
                                               const DiagnosticConsumer& diag);
 
 // The scene's picture in linear radiance. `evaluator` may be null with opt.reference.
-// nullopt after a diagnostic when a variant is missing, does not apply to a light
-// (sidedness, polygon size) or fails to run.
+// nullopt after a diagnostic when no variant is selected, one does not apply to a light (sidedness,
+// polygon size) or fails to run.
 std::optional<LinearImage> render(const RenderScene& scene, const RenderOptions& opt,
                                   Evaluator* evaluator, const DiagnosticConsumer& diag,
                                   const ProgressConsumer& progress = {},

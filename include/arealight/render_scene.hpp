@@ -17,6 +17,7 @@
 
 #include "arealight/case.hpp"
 #include "arealight/diagnostics.hpp"
+#include "arealight/scene.hpp"
 
 namespace arealight {
 
@@ -37,18 +38,17 @@ struct SceneObject {
     Vec3 albedo{};
 };
 
-struct RenderScene {
-    std::vector<Light> lights;
+// The scene as read_scene reads it (lights, materials, quality), so that it selects its
+// variants exactly as `arealight generate --scene` does, plus the renderer's fields.
+struct RenderScene : Scene {
     std::vector<double> intensities;  // one per light
-    std::vector<Material> materials;
-    std::string method;  // quality.method, empty when absent
     Camera camera;
     std::vector<SceneObject> objects;
 };
 
-// Parses and validates a scene for rendering. On failure returns nullopt and reports
-// every problem as "FILE: WHERE: field 'FIELD': reason" (WHERE: camera, object N,
-// light N, material N).
+// Parses and validates a scene for rendering: lights, materials and quality through
+// parse_scene, the rest here. On failure returns nullopt and reports every problem as
+// "FILE: WHERE: field 'FIELD': reason" (WHERE: camera, object N, light N, material N).
 std::optional<RenderScene> read_render_scene(const std::string& path,
                                              const DiagnosticConsumer& diag);
 // Same, from text already in memory; `name` stands for the file in messages.
