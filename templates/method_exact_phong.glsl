@@ -31,7 +31,7 @@
 // Cost: O(AL_NODES) per edge, independent of N.
 
 // Per-arc sums for the arc a -> b with inward unit normal m (phong_edge.glsl).
-AlPhongEdge al_phong_edge(rvec3 a, rvec3 b, rvec3 m, rvec3 r, rvec3 n, real N) {
+AlLobeEdge al_lobe_edge(rvec3 a, rvec3 b, rvec3 m, rvec3 r, rvec3 n, real N) {
     AlEdgeFrame E = al_edge_frame(a, b, m, r, N, AL_R(-6.9));  // x^(N+1) >= 1e-3
     real s = E.s;
     real sigma = sqrt(s * s + AL_R(4.0) / N);
@@ -61,7 +61,7 @@ AlPhongEdge al_phong_edge(rvec3 a, rvec3 b, rvec3 m, rvec3 r, rvec3 n, real N) {
         }
     }
     acc *= half_width;
-    AlPhongEdge e;
+    AlLobeEdge e;
     e.near_edge = !far_edge;
     real sgn = far_edge ? AL_R(1.0) : AL_R(-1.0);
     e.sums = rvec3(sgn * E.rm * acc.x, sgn * E.rm * acc.y, dot(n, m) * acc.z);

@@ -279,7 +279,7 @@ real al_peak_edge_term(AlEdgeFrame E, real dtau, real k, bool far_edge) {
 
 // Per-arc sums for the arc a -> b with inward unit normal m (phong_edge.glsl), the
 // same quantities as the exact method's.
-AlPhongEdge al_phong_edge(rvec3 a, rvec3 b, rvec3 m, rvec3 r, rvec3 n, real N) {
+AlLobeEdge al_lobe_edge(rvec3 a, rvec3 b, rvec3 m, rvec3 r, rvec3 n, real N) {
     AlEdgeFrame E = al_edge_frame(a, b, m, r, N, AL_PEAK_LOG_FAR);
 #ifdef AL_FIT_PAPER
     E.far_edge = false;  // the paper fits the near form everywhere
@@ -307,7 +307,7 @@ AlPhongEdge al_phong_edge(rvec3 a, rvec3 b, rvec3 m, rvec3 r, rvec3 n, real N) {
         tz = min(tz, al_tail_bound(al_exp(N * al_log(max(x1, AL_R(1e-30)))), N * tan1, dtau));
     }
 #endif
-    AlPhongEdge e;
+    AlLobeEdge e;
     e.near_edge = !far_edge;
     real sgn = far_edge ? AL_R(1.0) : AL_R(-1.0);
     e.sums = rvec3(sgn * E.rm * t1, sgn * E.rm * t0, dot(n, m) * tz);

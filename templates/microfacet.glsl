@@ -77,6 +77,7 @@ real al_erfcx(real x) {
     return (AL_R(0.56418958354775628695) - al_erfcx_asym(x)) / x;
 }
 
+#if defined(AL_DIST_BECKMANN) || defined(AL_DIST_BLINN)
 // Beckmann Smith Lambda, CONTRACT.md 2, a = 1/(alpha tan theta) = c/(alpha sqrt(s2)):
 // (erf(a) - 1)/2 + exp(-a^2)/(2 a sqrt(pi)) = exp(-a^2)/2 (1/(a sqrt(pi)) - erfcx(a)),
 // the bracket R(a)/a beyond a = 4 (no cancellation; at most 36x below). 0 at s2 = 0;
@@ -91,3 +92,4 @@ real al_beckmann_lambda(real alpha, real c, real s2) {
                            : AL_R(0.56418958354775628695) / a - al_erfcx(a);
     return AL_R(0.5) * al_exp(-a * a) * h;
 }
+#endif

@@ -1,11 +1,11 @@
 // The boundary accumulator of the edge-integral Phong methods (exact quadrature and
 // the peak functions): each arc of the clipped polygon D adds its terms
-// (al_phong_edge of the method) and the azimuth it sweeps about the lobe axis r.
+// (al_lobe_edge of the method) and the azimuth it sweeps about the lobe axis r.
 // polygon.glsl streams the arcs in; no per-vertex arrays.
 
 struct AlMoments {
     rvec3 e1, e2;  // tangent frame of r: azimuth psi = atan2(u.e2, u.e1)
-    rvec3 sums;    // sum of the arcs' al_phong_edge sums
+    rvec3 sums;    // sum of the arcs' al_lobe_edge sums
     real wraps;    // sweeps wrapped into (-pi, pi]: their count is the winding number
     real sweep_near, sweep_far, size_near, size_far;
 };
@@ -29,7 +29,7 @@ void al_moments_arc(AL_INOUT(AlMoments) M, rvec3 a, rvec3 b, rvec3 m, rvec3 r, r
                     real N) {
     real sweep = al_atan2(dot(b, M.e2), dot(b, M.e1)) - al_atan2(dot(a, M.e2), dot(a, M.e1));
     sweep = al_wrap_sweep(sweep, M.wraps);
-    AlPhongEdge e = al_phong_edge(a, b, m, r, n, N);
+    AlLobeEdge e = al_lobe_edge(a, b, m, r, n, N);
     M.sums += e.sums;
     if (e.near_edge) {
         M.sweep_near += sweep;

@@ -8,7 +8,7 @@
 // the driver forms it from per-vertex azimuths, so that its signed total is
 // exactly 2 pi times the winding number and rounding cancels between the arcs
 // that share a vertex.
-struct AlPhongEdge {
+struct AlLobeEdge {
     rvec3 sums;  // far: (r.m) T_(N+1), (r.m) T_N; near: -(r.m) int G_(N+1), -(r.m) int G_N;
                  // z: (n.m) int x^N dtau. Then T_k = [near] sweep + sums.
     bool near_edge;

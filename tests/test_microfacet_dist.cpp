@@ -64,6 +64,7 @@
 #define rvec4 dvec4
 #define AL_PRECISION_FP64 1
 #define AL_R(x) x
+#define AL_DIST_BLINN 1  // microfacet.glsl defines the Beckmann Lambda only then
 namespace mf64_blinn {
 using namespace glm;
 #include "templates/common.glsl"
@@ -71,6 +72,8 @@ using namespace glm;
 #include "templates/microfacet.glsl"
 AL_TEST_WRAPPERS
 }  // namespace mf64_blinn
+#undef AL_DIST_BLINN
+#define AL_DIST_BECKMANN 1  // microfacet.glsl defines the Beckmann Lambda only then
 namespace mf64_beckmann {
 using namespace glm;
 #include "templates/common.glsl"
@@ -78,6 +81,7 @@ using namespace glm;
 #include "templates/microfacet.glsl"
 AL_TEST_WRAPPERS
 }  // namespace mf64_beckmann
+#undef AL_DIST_BECKMANN
 namespace mf64_ggx {
 using namespace glm;
 #include "templates/common.glsl"
@@ -99,6 +103,7 @@ AL_TEST_WRAPPERS
 #define rvec4 vec4
 #define AL_PRECISION_FP64 0
 #define AL_R(x) x##f
+#define AL_DIST_BLINN 1  // microfacet.glsl defines the Beckmann Lambda only then
 namespace mf32_blinn {
 using namespace glm;
 #include "templates/common.glsl"
@@ -106,6 +111,8 @@ using namespace glm;
 #include "templates/microfacet.glsl"
 AL_TEST_WRAPPERS
 }  // namespace mf32_blinn
+#undef AL_DIST_BLINN
+#define AL_DIST_BECKMANN 1  // microfacet.glsl defines the Beckmann Lambda only then
 namespace mf32_beckmann {
 using namespace glm;
 #include "templates/common.glsl"
@@ -113,6 +120,7 @@ using namespace glm;
 #include "templates/microfacet.glsl"
 AL_TEST_WRAPPERS
 }  // namespace mf32_beckmann
+#undef AL_DIST_BECKMANN
 namespace mf32_ggx {
 using namespace glm;
 #include "templates/common.glsl"
