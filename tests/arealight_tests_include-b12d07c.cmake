@@ -1,5 +1,0 @@
-if(EXISTS "/work/main/tests/arealight_tests_tests-b12d07c.cmake")
-  include("/work/main/tests/arealight_tests_tests-b12d07c.cmake")
-else()
-  add_test(arealight_tests_NOT_BUILT-b12d07c arealight_tests_NOT_BUILT-b12d07c)
-endif()
