@@ -82,6 +82,14 @@ std::optional<json> parse_json(const std::string& text, const std::string& file,
     }
 }
 
+// A value as a message shows it: scalars as JSON, containers by kind only, because dump()
+// recurses once per level and a deeply nested value (a 200 kB file) overflows the stack.
+std::string describe(const json& v) {
+    if (v.is_array()) return "an array";
+    if (v.is_object()) return "an object";
+    return v.dump();
+}
+
 // Collects "FILE: case 'ID': field 'FIELD': reason" messages for one file.
 class Reporter {
   public:
@@ -411,7 +419,7 @@ std::optional<CaseSet> parse_cases(const std::string& text, const std::string& n
         return std::nullopt;
     }
     if (!f->is_string() || f->get<std::string>() != "arealight-cases/1") {
-        rep.error("", "format", "is " + f->dump() + ", expected \"arealight-cases/1\"");
+        rep.error("", "format", "is " + describe(*f) + ", expected \"arealight-cases/1\"");
         return std::nullopt;
     }
     auto cs = doc.find("cases");
@@ -492,10 +500,15 @@ bool write_results(const std::string& path, const ResultSet& results,
 std::optional<ResultSet> read_results(const std::string& path, const DiagnosticConsumer& diag) {
     auto text = read_text(path, diag);
     if (!text) return std::nullopt;
-    auto parsed = parse_json(*text, path, diag);
+    return parse_results(*text, path, diag);
+}
+
+std::optional<ResultSet> parse_results(const std::string& text, const std::string& name,
+                                       const DiagnosticConsumer& diag) {
+    auto parsed = parse_json(text, name, diag);
     if (!parsed) return std::nullopt;
     const json& doc = *parsed;
-    Reporter rep(path, diag);
+    Reporter rep(name, diag);
     if (!doc.is_object()) {
         rep.error("", "format", "the file must be a JSON object");
         return std::nullopt;
@@ -504,7 +517,7 @@ std::optional<ResultSet> read_results(const std::string& path, const DiagnosticC
     if (f == doc.end() || !f->is_string() || f->get<std::string>() != "arealight-results/1") {
         rep.error("", "format",
                   f == doc.end() ? "missing (expected \"arealight-results/1\")"
-                                 : "is " + f->dump() + ", expected \"arealight-results/1\"");
+                                 : "is " + describe(*f) + ", expected \"arealight-results/1\"");
         return std::nullopt;
     }
     auto rs = doc.find("results");

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Builds arealight and its tests with gcc's AddressSanitizer and UndefinedBehaviorSanitizer
+# into build-asan/ and runs them through ctest: any memory error, leak or undefined
+# behaviour in our code fails the run. Leaks inside the Vulkan driver (lavapipe and the
+# LLVM it JITs with) are not ours and are suppressed by scripts/lsan-driver.supp, which
+# names only those libraries.
+#   SANITIZE_CTEST_ARGS="-R io" scripts/sanitize.sh    a subset of the tests
+set -euo pipefail
+cd "$(dirname "$0")/.."
+flags="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all"
+cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS="$flags" \
+  -DCMAKE_EXE_LINKER_FLAGS="$flags" >/dev/null
+cmake --build build-asan -j"$(nproc)"
+
+export ASAN_OPTIONS="detect_leaks=1:strict_init_order=1:check_initialization_order=1"
+export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan-driver.supp:print_suppressions=0"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+cd build-asan
+# shellcheck disable=SC2086  # the arguments are meant to split
+ctest --output-on-failure -j"$(nproc)" ${SANITIZE_CTEST_ARGS:-}
