@@ -30,7 +30,7 @@ declare -A seed_dirs=(
   [fuzz_cases]="fuzz/corpus/cases $seeds/cases"
   [fuzz_results]="fuzz/corpus/results $seeds/results"
   [fuzz_variant]="fuzz/corpus/variant"
-  [fuzz_scene]="fuzz/corpus/scene $seeds/cases"
+  [fuzz_scene]="fuzz/corpus/scene"
 )
 declare -A dicts=([fuzz_variant]=fuzz/variant.dict)
 
