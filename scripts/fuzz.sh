@@ -39,7 +39,12 @@ for target in fuzz_cases fuzz_results fuzz_variant fuzz_scene; do
   [ -x "$out/$target" ] || { echo "fuzz: $target not built (see fuzz/CMakeLists.txt)"; continue; }
   # Inputs that once failed: replayed first, each must now pass.
   if compgen -G "fuzz/crashes/$target/*" >/dev/null; then
-    "$out/$target" fuzz/crashes/"$target"/* 2>&1 | tail -n 1
+    if ! "$out/$target" fuzz/crashes/"$target"/* >"$out/$target.replay.log" 2>&1; then
+      echo "fuzz: $target FAILED on an input of fuzz/crashes/$target; log: $out/$target.replay.log"
+      status=1
+      continue
+    fi
+    echo "fuzz: $target passes the inputs of fuzz/crashes/$target"
   fi
   work="$out/corpus/$target"   # grows across local runs; the committed seeds stay untouched
   mkdir -p "$work"
