@@ -34,21 +34,20 @@ declare -A seed_dirs=(
 )
 declare -A dicts=([fuzz_variant]=fuzz/variant.dict)
 
-status=0
-for target in fuzz_cases fuzz_results fuzz_variant fuzz_scene; do
-  [ -x "$out/$target" ] || { echo "fuzz: $target not built (see fuzz/CMakeLists.txt)"; continue; }
-  # Inputs that once failed: replayed first, each must now pass.
+# One target: replays its committed reproducers, then fuzzes; prints one verdict line and
+# returns non-zero on any finding.
+fuzz_one() {
+  local target=$1
+  # Inputs that once failed: each must now pass.
   if compgen -G "fuzz/crashes/$target/*" >/dev/null; then
     if ! "$out/$target" fuzz/crashes/"$target"/* >"$out/$target.replay.log" 2>&1; then
       echo "fuzz: $target FAILED on an input of fuzz/crashes/$target; log: $out/$target.replay.log"
-      status=1
-      continue
+      return 1
     fi
-    echo "fuzz: $target passes the inputs of fuzz/crashes/$target"
   fi
-  work="$out/corpus/$target"   # grows across local runs; the committed seeds stay untouched
+  local work="$out/corpus/$target"   # grows across local runs; the committed seeds stay as they are
   mkdir -p "$work"
-  limit=(-max_total_time="$seconds")
+  local limit=(-max_total_time="$seconds")
   [ -n "$runs" ] && limit=(-runs="$runs")
   # shellcheck disable=SC2086  # seed_dirs holds several folders
   if ! "$out/$target" "${limit[@]}" -max_len=4096 -timeout=10 -rss_limit_mb=2048 \
@@ -57,13 +56,30 @@ for target in fuzz_cases fuzz_results fuzz_variant fuzz_scene; do
       >"$out/$target.log" 2>&1; then
     echo "fuzz: $target FAILED; its log: $out/$target.log"
     grep -E "ERROR|SUMMARY|invariant|Test unit written" "$out/$target.log" | head -n 20 || true
-    status=1
-    continue
+    return 1
   fi
+  local stats cov
   stats=$(grep -E "^stat::(number_of_executed_units|average_exec_per_sec|new_units_added)" \
     "$out/$target.log" | sed 's/stat:://' | tr -s ' ' | tr '\n' ' ')
   cov=$(grep -E "^#[0-9]+.*(DONE|pulse|NEW|REDUCE)" "$out/$target.log" | tail -n 1 |
     grep -oE "cov: [0-9]+ ft: [0-9]+" || true)
   echo "fuzz: $target ok: $stats $cov"
+}
+
+# As many targets at once as there are cores: each fuzzer is single-threaded.
+status=0
+running=0
+for target in fuzz_cases fuzz_results fuzz_variant fuzz_scene; do
+  [ -x "$out/$target" ] || { echo "fuzz: $target not built (see fuzz/CMakeLists.txt)"; continue; }
+  if [ "$running" -ge "$(nproc)" ]; then
+    wait -n || status=1
+    running=$((running - 1))
+  fi
+  fuzz_one "$target" &
+  running=$((running + 1))
+done
+while [ "$running" -gt 0 ]; do
+  wait -n || status=1
+  running=$((running - 1))
 done
 exit $status
