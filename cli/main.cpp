@@ -18,8 +18,6 @@
 #include <string>
 #include <thread>
 
-#include <unistd.h>  // isatty: a live progress line only on a terminal
-
 #include "arealight/atomic_file.hpp"
 #include "arealight/benchmark.hpp"
 #include "arealight/case_io.hpp"
@@ -30,10 +28,18 @@
 #include "arealight/reference.hpp"
 #include "arealight/report.hpp"
 #include "arealight/score.hpp"
+#include "compile.hpp"
 #include "fit_ltc.hpp"
+#include "generate.hpp"
+#include "generate_scene.hpp"
+#include "quality.hpp"
+#include "progress.hpp"
+#include "render.hpp"
 #include "summary.hpp"
 
 namespace {
+
+using arealight::cli::ProgressPrinter;
 
 enum Exit { kOk = 0, kBadInput = 1, kUsage = 2, kRuntime = 3 };
 
@@ -45,33 +51,6 @@ void print_diagnostic(const arealight::Diagnostic& d) {
         fmt::print(stderr, "arealight: {}: {}\n", arealight::to_string(d.severity), d.message);
     }
 }
-
-// Reports progress on stderr once a run has taken more than a second: one live
-// line (rewritten every 250 ms) on a terminal, plain lines (every 5 s, and the
-// last) when stderr is a file or a pipe, so that logs stay readable.
-class ProgressPrinter {
-  public:
-    ProgressPrinter(std::string what, std::string unit)
-        : what_(std::move(what)),
-          unit_(std::move(unit)),
-          start_(std::chrono::steady_clock::now()),
-          live_(isatty(fileno(stderr)) != 0) {}
-    void operator()(std::size_t done, std::size_t total) {
-        const auto now = std::chrono::steady_clock::now();
-        const double elapsed = std::chrono::duration<double>(now - start_).count();
-        const auto every = live_ ? std::chrono::milliseconds(250) : std::chrono::milliseconds(5000);
-        if (elapsed < 1.0 || (done != total && now - last_ < every)) return;
-        last_ = now;
-        fmt::print(stderr, "{}{}: {}/{} {}, {:.1f} s{}", live_ ? "\r" : "", what_, done, total,
-                   unit_, elapsed, live_ && done != total ? "" : "\n");
-        std::fflush(stderr);
-    }
-
-  private:
-    std::string what_, unit_;
-    std::chrono::steady_clock::time_point start_, last_{};
-    bool live_;
-};
 
 int run_reference(const std::string& cases_path, const std::string& out_path, double rel_tol,
                   unsigned threads, bool table) {
@@ -116,25 +95,6 @@ int run_eval(const std::string& cases_path, const std::string& variant_name,
     if (!arealight::write_results(out_path, *results, print_diagnostic)) return kRuntime;
     fmt::print(stderr, "eval: {} cases on {}, {} not applicable to {}\n", stats.evaluated, backend,
                stats.skipped, arealight::canonical_name(*variant));
-    return kOk;
-}
-
-int run_generate(const std::string& variant_name, const std::string& glsl_path,
-                 const std::string& spv_path, bool no_opt) {
-    auto variant = arealight::parse_variant(variant_name, print_diagnostic);
-    if (!variant) return kBadInput;
-    const std::string glsl = arealight::generate_source(*variant, arealight::Language::Glsl);
-    // Compile even when only GLSL is asked for: a written shader is a valid shader.
-    auto spirv = arealight::build_spirv(*variant, !no_opt, print_diagnostic);
-    if (!spirv) return kRuntime;
-    if (glsl_path.empty() && spv_path.empty()) fmt::print("{}", glsl);
-    if (!glsl_path.empty() && !arealight::write_file_atomic(glsl_path, glsl, print_diagnostic))
-        return kRuntime;
-    if (!spv_path.empty()) {
-        const std::string bytes(reinterpret_cast<const char*>(spirv->data()),
-                                spirv->size() * sizeof(uint32_t));
-        if (!arealight::write_file_atomic(spv_path, bytes, print_diagnostic)) return kRuntime;
-    }
     return kOk;
 }
 
@@ -365,14 +325,8 @@ int main(int argc, char** argv) {
     eval->add_option("--device", device, "Vulkan device name substring (default: first device)");
     eval->add_option("--out", out_path, "arealight-results/1 file to write")->required();
 
-    std::string glsl_path, spv_path;
-    bool no_opt = false;
-    auto* generate = app.add_subcommand(
-        "generate", "Write a variant's GLSL and/or SPIR-V (GLSL on stdout when no file is given)");
-    generate->add_option("--variant", variant, "variant name")->required();
-    generate->add_option("--glsl", glsl_path, "GLSL file to write");
-    generate->add_option("--spv", spv_path, "SPIR-V file to write");
-    generate->add_flag("--no-opt", no_opt, "skip the SPIRV-Tools performance passes");
+    arealight::cli::GenerateArgs generate_args;
+    auto* generate = arealight::cli::add_generate_command(app, generate_args);
 
     double rel_tol = 1e-10;
     unsigned threads = std::max(1u, std::thread::hardware_concurrency());
@@ -460,6 +414,14 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1.0, 100000.0));
     arealight::cli::FitLtcArgs fit_args;
     auto* fit_ltc = arealight::cli::add_fit_ltc_command(app, fit_args);
+    arealight::cli::QualityArgs quality_args;
+    auto* quality = arealight::cli::add_quality_command(app, quality_args);
+    arealight::cli::SceneVariantsArgs scene_args;
+    auto* scene_variants = arealight::cli::add_scene_variants_command(app, scene_args);
+    arealight::cli::RenderArgs render_args;
+    auto* render = arealight::cli::add_render_command(app, render_args);
+    arealight::cli::CompileArgs compile_args;
+    auto* compile = arealight::cli::add_compile_command(app, compile_args);
 
     try {
         app.parse(argc, argv);
@@ -476,11 +438,15 @@ int main(int argc, char** argv) {
     if (report->parsed()) return run_report(rep, false);
     if (sweep->parsed()) return run_report(swp, true);
     if (eval->parsed()) return run_eval(cases_path, variant, backend, device, out_path);
-    if (generate->parsed()) return run_generate(variant, glsl_path, spv_path, no_opt);
+    if (generate->parsed()) return arealight::cli::run_generate(generate_args, print_diagnostic);
     if (bench->parsed())
         return run_bench(cases_path, bench_variants, exponents, backend, min_cases, repeats);
     if (compare->parsed()) return run_compare(ref_path, out_path, floor);
     if (reference->parsed()) return run_reference(cases_path, out_path, rel_tol, threads, table);
     if (fit_ltc->parsed()) return arealight::cli::run_fit_ltc(fit_args);
+    if (quality->parsed()) return arealight::cli::run_quality(quality_args);
+    if (scene_variants->parsed()) return arealight::cli::run_scene_variants(scene_args);
+    if (render->parsed()) return arealight::cli::run_render(render_args);
+    if (compile->parsed()) return arealight::cli::run_compile(compile_args);
     return kUsage;
 }

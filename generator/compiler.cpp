@@ -12,6 +12,8 @@
 #include <spirv-tools/optimizer.hpp>
 #include <sstream>
 
+#include "file_includer.hpp"
+
 namespace arealight {
 namespace {
 
@@ -190,24 +192,52 @@ bool validate(const std::vector<uint32_t>& spirv, const std::string& stage,
     return false;
 }
 
+EShLanguage glslang_stage(ShaderStage stage) {
+    switch (stage) {
+        case ShaderStage::Vertex:
+            return EShLangVertex;
+        case ShaderStage::TessControl:
+            return EShLangTessControl;
+        case ShaderStage::TessEvaluation:
+            return EShLangTessEvaluation;
+        case ShaderStage::Geometry:
+            return EShLangGeometry;
+        case ShaderStage::Fragment:
+            return EShLangFragment;
+        case ShaderStage::Compute:
+            return EShLangCompute;
+    }
+    return EShLangCompute;
+}
+
+// glslang's preamble is read before the shader's first line but after its #version, which
+// glslang scans for separately; this is how glslc spares users the #extension line.
+constexpr const char* kIncludePreamble = "#extension GL_GOOGLE_include_directive : enable\n";
+
 // glslang front end: parse, link and translate. The program refers to the shader's intermediate
 // tree, so it is declared after the shader and therefore destroyed first (ShaderLang.h).
 std::optional<std::vector<uint32_t>> glsl_to_spirv(const std::string& source,
                                                    const std::string& source_name,
                                                    const CompileOptions& options,
-                                                   Reporter& report) {
+                                                   Reporter& report,
+                                                   std::vector<std::string>* included_files) {
     ensure_glslang_initialized();
-    glslang::TShader shader(EShLangCompute);
+    const EShLanguage stage = glslang_stage(options.stage);
+    glslang::TShader shader(stage);
     const char* text = source.c_str();
     const int length = static_cast<int>(source.size());
     const char* name = source_name.c_str();
     shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
-    shader.setEnvInput(glslang::EShSourceGlsl, EShLangCompute, glslang::EShClientVulkan, 100);
+    shader.setEnvInput(glslang::EShSourceGlsl, stage, glslang::EShClientVulkan, 100);
     shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1);
     shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
     const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
 
-    const bool parsed = shader.parse(GetDefaultResources(), kDefaultGlslVersion, false, messages);
+    if (options.includes) shader.setPreamble(kIncludePreamble);
+    FileIncluder includer(options.include_dirs);
+    const bool parsed =
+        shader.parse(GetDefaultResources(), kDefaultGlslVersion, false, messages, includer);
+    if (included_files) *included_files = includer.files();
     report_info_log(shader.getInfoLog(), source_name, report);
     // glslang can log an ERROR and still return true; an error always means failure here.
     if (!parsed || report.any_error()) {
@@ -228,7 +258,7 @@ std::optional<std::vector<uint32_t>> glsl_to_spirv(const std::string& source,
     spv::SpvBuildLogger logger;
     glslang::SpvOptions spv_options;
     spv_options.disableOptimizer = true;  // SPIRV-Tools does this below, with validation
-    glslang::GlslangToSpv(*program.getIntermediate(EShLangCompute), spirv, &logger, &spv_options);
+    glslang::GlslangToSpv(*program.getIntermediate(stage), spirv, &logger, &spv_options);
     const std::string spv_messages = logger.getAllMessages();
     if (!spv_messages.empty()) {
         report(Diagnostic{Severity::Warning, source_name, 0, "glslang SPIR-V: " + spv_messages});
@@ -246,14 +276,16 @@ std::optional<std::vector<uint32_t>> glsl_to_spirv(const std::string& source,
 std::optional<std::vector<uint32_t>> compile_glsl(const std::string& source,
                                                   const std::string& source_name,
                                                   const CompileOptions& options,
-                                                  const DiagnosticConsumer& diag) {
+                                                  const DiagnosticConsumer& diag,
+                                                  std::vector<std::string>* included_files) {
     Reporter report(diag);
+    if (included_files) included_files->clear();
     if (options.entry.empty()) {
         report.error(source_name, "CompileOptions::entry is empty");
         return std::nullopt;
     }
     std::optional<std::vector<uint32_t>> spirv =
-        glsl_to_spirv(source, source_name, options, report);
+        glsl_to_spirv(source, source_name, options, report, included_files);
     if (!spirv) return std::nullopt;
     if (!validate(*spirv, "after glslang", source_name, report)) return std::nullopt;
     if (!options.optimize) return spirv;
@@ -268,6 +300,36 @@ std::optional<std::vector<uint32_t>> compile_glsl(const std::string& source,
     }
     if (!validate(optimized, "after spirv-opt", source_name, report)) return std::nullopt;
     return optimized;
+}
+
+std::optional<ShaderStage> stage_from_path(const std::string& path) {
+    const std::size_t dot = path.rfind('.');
+    const std::size_t slash = path.find_last_of("/\\");
+    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return std::nullopt;
+    const std::string ext = path.substr(dot + 1);
+    for (ShaderStage s : {ShaderStage::Vertex, ShaderStage::TessControl, ShaderStage::TessEvaluation,
+                          ShaderStage::Geometry, ShaderStage::Fragment, ShaderStage::Compute}) {
+        if (ext == to_string(s)) return s;
+    }
+    return std::nullopt;
+}
+
+const char* to_string(ShaderStage stage) {
+    switch (stage) {
+        case ShaderStage::Vertex:
+            return "vert";
+        case ShaderStage::TessControl:
+            return "tesc";
+        case ShaderStage::TessEvaluation:
+            return "tese";
+        case ShaderStage::Geometry:
+            return "geom";
+        case ShaderStage::Fragment:
+            return "frag";
+        case ShaderStage::Compute:
+            return "comp";
+    }
+    return "comp";
 }
 
 std::size_t spirv_instruction_count(const std::vector<uint32_t>& spirv) {

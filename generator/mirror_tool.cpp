@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "arealight/case_layout.hpp"
 #include "arealight/generator.hpp"
 #include "arealight/variant.hpp"
 
@@ -76,7 +77,7 @@ int main(int argc, char** argv) {
                            variants[i].verts == arealight::Variant{}.verts &&
                            variants[i].specular == arealight::SpecularForm::TwoAxis;
         if (probe) {
-            out += fmt::format(
+            out += arealight::library_rename(fmt::format(
                 "float edge_probe(float ag, float af, float bg, float bf, float s, float k, "
                 "bool far_edge) {{\n"
                 "    AlEdgeFrame E;\n"
@@ -85,7 +86,7 @@ int main(int argc, char** argv) {
                 "    E.xa = E.c * af;\n    E.xb = E.c * bf;\n    E.far_edge = far_edge;\n"
                 "    float dtau = max(al_atan2(bg, bf) - al_atan2(ag, af), 0.0f);\n"
                 "    return al_peak_edge_term(E, dtau, k, far_edge);\n"
-                "}}\n");
+                "}}\n"), variants[i]);
             probe_decls += fmt::format(
                 "namespace al_mirror_{} {{ float edge_probe(float, float, float, float, float, "
                 "float, bool); }}\n",
@@ -101,26 +102,52 @@ int main(int argc, char** argv) {
         std::string bind;
         for (std::size_t k = 0; k < samplers.size(); ++k) {
             bind += fmt::format("    {0}.tex = texture_count > {1} ? textures[{1}] : nullptr;\n",
-                                samplers[k], k);
+                                arealight::library_rename(samplers[k], variants[i]), k);
         }
+        // The validation kernel's loop (templates/kernel_<light>.glsl) over the same packed
+        // cases: the library function for diffuse and specular, and with `second` the
+        // entry's other quantities from a second call.
         out += fmt::format(
             "void run(const void* cases, float* results, std::size_t count,\n"
-            "         const arealight::Texture2D* const* textures, std::size_t texture_count) {{\n"
+            "         const arealight::Texture2D* const* textures, std::size_t texture_count,\n"
+            "         bool second) {{\n"
             "    (void)textures;\n    (void)texture_count;\n"
             "{}"
-            "    const AlCase* in = static_cast<const AlCase*>(cases);\n"
+            "    const float* in = static_cast<const float*>(cases);\n"
             "    for (std::size_t i = 0; i < count; ++i) {{\n"
-            "        const vec4 r = al_clean(al_shade(in[i]));\n"
+            "        const float* c = in + {} * i;\n"
+            "        ArealightSurface s;\n"
+            "        s.p = vec3(c[0], c[1], c[2]);\n"
+            "        s.n = vec3(c[4], c[5], c[6]);\n"
+            "        s.v = vec3(c[8], c[9], c[10]);\n"
+            "        s.param = c[12];\n"
+            "        s.f0 = c[13];\n"
+            "        vec3 vertices[8];\n"
+            "        for (int k = 0; k < 8; ++k)\n"
+            "            vertices[k] = vec3(c[16 + 4 * k], c[17 + 4 * k], c[18 + 4 * k]);\n"
+            "        const int n = int(c[15]);\n"
+            "        const bool two_sided = c[14] != 0.0f;\n"
+            "        const ArealightShading o = {}(s, vertices, n, two_sided);\n"
+            "        vec4 r(o.diffuse, o.specular, 0.0f, 0.0f);\n"
+            "        if (second) {{\n"
+            "            const vec4 q = {}(s, vertices, n, two_sided);\n"
+            "            r.z = q.z;\n"
+            "            r.w = q.w;\n"
+            "        }}\n"
             "        for (int k = 0; k < 4; ++k) results[4 * i + k] = r[k];\n"
             "    }}\n"
             "}}\n"
             "}}  // namespace al_mirror_{}\n",
-            bind, i);
+            bind, arealight::kFloatsPerCase, arealight::library_function_name(variants[i]),
+            arealight::library_rename(
+                fmt::format("al_{}_evaluate", arealight::to_string(variants[i].light)),
+                variants[i]),
+            i);
         for (const auto& d : defined_names(src)) out += fmt::format("#undef {}\n", d);
         out += "\n";
         decls += fmt::format(
             "namespace al_mirror_{} {{ void run(const void*, float*, std::size_t, "
-            "const arealight::Texture2D* const*, std::size_t); }}\n",
+            "const arealight::Texture2D* const*, std::size_t, bool); }}\n",
             i);
         entries +=
             fmt::format("        {{\"{}\", &al_mirror_{}::run, {}}},\n", name, i, samplers.size());

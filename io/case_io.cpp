@@ -12,32 +12,12 @@
 #include <set>
 
 #include "arealight/atomic_file.hpp"
+#include "case_fields.hpp"
 
 namespace arealight {
-namespace {
+namespace io_detail {
 
 using json = nlohmann::json;
-// Output keeps insertion order so that files read in the order CONTRACT.md shows.
-using ordered_json = nlohmann::ordered_json;
-
-// Coordinates beyond this would overflow the products the shaders and the oracle form.
-constexpr double kMaxCoordinate = 1e15;
-// Relative tolerance of the disk and ellipsoid orthogonality checks.
-constexpr double kOrthogonalRel = 1e-6;
-constexpr double kPi = 3.14159265358979323846;
-
-Vec3 sub(const Vec3& a, const Vec3& b) {
-    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-Vec3 cross(const Vec3& a, const Vec3& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double dot(const Vec3& a, const Vec3& b) {
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-double norm(const Vec3& a) {
-    return std::sqrt(dot(a, a));
-}
 
 void report(const DiagnosticConsumer& diag, const std::string& file, const std::string& message) {
     if (diag) diag({Severity::Error, file, 0, file + ": " + message});
@@ -82,6 +62,16 @@ std::optional<json> parse_json(const std::string& text, const std::string& file,
     }
 }
 
+void Reporter::error(const std::string& where, const std::string& field,
+                     const std::string& reason) {
+    ++errors_;
+    std::string msg;
+    if (!where.empty()) msg += where + ": ";
+    if (!field.empty()) msg += "field '" + field + "': ";
+    msg += reason;
+    report(diag_, file_, msg);
+}
+
 // A value as a message shows it: scalars as JSON, containers by kind only, because dump()
 // recurses once per level and a deeply nested value (a 200 kB file) overflows the stack.
 std::string describe(const json& v) {
@@ -90,33 +80,67 @@ std::string describe(const json& v) {
     return v.dump();
 }
 
-// Collects "FILE: case 'ID': field 'FIELD': reason" messages for one file.
-class Reporter {
-  public:
-    Reporter(std::string file, const DiagnosticConsumer& diag)
-        : file_(std::move(file)), diag_(diag) {}
-    void error(const std::string& where, const std::string& field, const std::string& reason) {
-        ++errors_;
-        std::string msg;
-        if (!where.empty()) msg += where + ": ";
-        if (!field.empty()) msg += "field '" + field + "': ";
-        msg += reason;
-        report(diag_, file_, msg);
+bool check_format(const json& doc, const std::string& format, Reporter& rep) {
+    if (!doc.is_object()) {
+        rep.error("", "format", "the file must be a JSON object");
+        return false;
     }
-    int errors() const { return errors_; }
+    auto f = doc.find("format");
+    if (f == doc.end()) {
+        rep.error("", "format", "missing (expected \"" + format + "\")");
+        return false;
+    }
+    if (!f->is_string() || f->get<std::string>() != format) {
+        rep.error("", "format", "is " + describe(*f) + ", expected \"" + format + "\"");
+        return false;
+    }
+    return true;
+}
 
-  private:
-    std::string file_;
-    const DiagnosticConsumer& diag_;
-    int errors_ = 0;
-};
+}  // namespace io_detail
+
+namespace {
+
+using json = nlohmann::json;
+// Output keeps insertion order so that files read in the order CONTRACT.md shows.
+using ordered_json = nlohmann::ordered_json;
+
+// Coordinates beyond this would overflow the products the shaders and the oracle form.
+constexpr double kMaxCoordinate = 1e15;
+// Relative tolerance of the disk and ellipsoid orthogonality checks.
+constexpr double kOrthogonalRel = 1e-6;
+constexpr double kPi = 3.14159265358979323846;
+
+Vec3 sub(const Vec3& a, const Vec3& b) {
+    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+Vec3 cross(const Vec3& a, const Vec3& b) {
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+double dot(const Vec3& a, const Vec3& b) {
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+double norm(const Vec3& a) {
+    return std::sqrt(dot(a, a));
+}
+
+using io_detail::parse_json;
+using io_detail::read_text;
+using io_detail::Reporter;
 
 // Reads and checks the fields of one case. Independent fields are all checked, so one pass
 // reports every problem; a check that needs an earlier value runs only when it was valid.
 class CaseReader {
   public:
-    CaseReader(Reporter& rep, std::string where, const ValidationTolerances& tol)
-        : rep_(rep), where_(std::move(where)), tol_(tol) {}
+    // light_prefix, material_prefix: what the fields of a light and a material are named
+    // after ("light.vertices" in a case, "vertices" in a scene's list of lights).
+    CaseReader(Reporter& rep, std::string where, const ValidationTolerances& tol,
+               std::string light_prefix = "light.", std::string material_prefix = "material.")
+        : rep_(rep),
+          where_(std::move(where)),
+          tol_(tol),
+          light_(std::move(light_prefix)),
+          material_(std::move(material_prefix)) {}
 
     bool fail(const std::string& path, const std::string& reason) {
         rep_.error(where_, path, reason);
@@ -166,22 +190,22 @@ class CaseReader {
     void read_polygon(const json& L, Light& light) {
         auto it = L.find("vertices");
         if (it == L.end()) {
-            fail("light.vertices", "missing");
+            fail(light_ + "vertices", "missing");
             return;
         }
         if (!it->is_array()) {
-            fail("light.vertices", "must be an array of points");
+            fail(light_ + "vertices", "must be an array of points");
             return;
         }
         if (it->size() < 3 || it->size() > 8) {
-            fail("light.vertices",
+            fail(light_ + "vertices",
                  fmt::format("has {} vertices; a polygon needs 3 to 8", it->size()));
             return;
         }
         bool ok = true;
         for (std::size_t i = 0; i < it->size(); ++i) {
             Vec3 x{};
-            ok = vec3((*it)[i], fmt::format("light.vertices[{}]", i), x) && ok;
+            ok = vec3((*it)[i], light_ + fmt::format("vertices[{}]", i), x) && ok;
             light.vertices.push_back(x);
         }
         if (ok) check_polygon(light.vertices);
@@ -198,7 +222,8 @@ class CaseReader {
         for (std::size_t i = 0; i < n; ++i) {
             const std::size_t next = (i + 1) % n;
             if (norm(sub(V[next], V[i])) <= 1e-12 * diameter) {
-                fail(fmt::format("light.vertices[{}]", next), fmt::format("repeats vertex {}", i));
+                fail(light_ + fmt::format("vertices[{}]", next),
+                     fmt::format("repeats vertex {}", i));
                 return;
             }
         }
@@ -214,14 +239,14 @@ class CaseReader {
         }
         const double nl = norm(newell);
         if (!(nl > 0.0)) {
-            fail("light.vertices", "the polygon has zero area");
+            fail(light_ + "vertices", "the polygon has zero area");
             return;
         }
         const Vec3 N = {newell[0] / nl, newell[1] / nl, newell[2] / nl};
         for (std::size_t i = 0; i < n; ++i) {
             const double d = std::abs(dot(N, sub(V[i], centroid)));
             if (d > tol_.coplanar_rel * diameter) {
-                fail(fmt::format("light.vertices[{}]", i),
+                fail(light_ + fmt::format("vertices[{}]", i),
                      fmt::format("is {:.3g} off the polygon's plane, more than {:g} of its "
                                  "diameter {:.3g}: not coplanar",
                                  d, tol_.coplanar_rel, diameter));
@@ -233,12 +258,12 @@ class CaseReader {
             const Vec3 a = sub(V[i], V[(i + n - 1) % n]), b = sub(V[(i + 1) % n], V[i]);
             const double sin_turn = dot(cross(a, b), N) / (norm(a) * norm(b));
             if (std::abs(sin_turn) <= tol_.collinear_rel) {
-                fail(fmt::format("light.vertices[{}]", i),
+                fail(light_ + fmt::format("vertices[{}]", i),
                      "is collinear with its neighbours (a straight or folded-back corner)");
                 return;
             }
             if (sin_turn < 0.0) {
-                fail(fmt::format("light.vertices[{}]", i),
+                fail(light_ + fmt::format("vertices[{}]", i),
                      "is a reflex corner: the polygon is not convex");
                 return;
             }
@@ -247,7 +272,7 @@ class CaseReader {
         // Every turn having one sign still admits star polygons (a pentagram turns 4 pi);
         // a convex polygon turns exactly once around.
         if (total_turn > 3.0 * kPi) {
-            fail("light.vertices",
+            fail(light_ + "vertices",
                  fmt::format("the outline winds {:.0f} times around: the polygon intersects "
                              "itself and is not convex",
                              total_turn / (2.0 * kPi)));
@@ -261,7 +286,7 @@ class CaseReader {
     void read_two_sided(const json& L, Light& light) {
         if (auto ts = L.find("two_sided"); ts != L.end()) {
             if (!ts->is_boolean())
-                fail("light.two_sided", "must be true or false");
+                fail(light_ + "two_sided", "must be true or false");
             else
                 light.two_sided = ts->get<bool>();
         }
@@ -277,10 +302,13 @@ class CaseReader {
             fail("light", "must be an object");
             return;
         }
-        const json& L = *it;
+        read_light_fields(*it, light);
+    }
+
+    void read_light_fields(const json& L, Light& light) {
         auto t = L.find("type");
         if (t == L.end() || !t->is_string()) {
-            fail("light.type", t == L.end() ? "missing" : "must be a string");
+            fail(light_ + "type", t == L.end() ? "missing" : "must be a string");
             return;
         }
         const std::string type = t->get<std::string>();
@@ -291,23 +319,23 @@ class CaseReader {
         } else if (type == "disk") {
             light.type = LightType::Disk;
             read_two_sided(L, light);
-            vec3_field(L, "center", "light.center", light.center);
-            const bool u = direction(L, "u", "light.u", light.u);
-            const bool v = direction(L, "v", "light.v", light.v);
+            vec3_field(L, "center", light_ + "center", light.center);
+            const bool u = direction(L, "u", light_ + "u", light.u);
+            const bool v = direction(L, "v", light_ + "v", light.v);
             if (u && v && !orthogonal(light.u, light.v))
-                fail("light.v", fmt::format("must be orthogonal to light.u (|u.v| <= {:g} |u||v|)",
-                                            kOrthogonalRel));
+                fail(light_ + "v", fmt::format("must be orthogonal to {}u (|u.v| <= {:g} |u||v|)",
+                                               light_, kOrthogonalRel));
         } else if (type == "sphere") {
             light.type = LightType::Sphere;
-            vec3_field(L, "center", "light.center", light.center);
-            if (number(L, "radius", "light.radius", light.radius) && !(light.radius > 0.0))
-                fail("light.radius", fmt::format("{:g} is not positive", light.radius));
+            vec3_field(L, "center", light_ + "center", light.center);
+            if (number(L, "radius", light_ + "radius", light.radius) && !(light.radius > 0.0))
+                fail(light_ + "radius", fmt::format("{:g} is not positive", light.radius));
         } else if (type == "ellipsoid") {
             light.type = LightType::Ellipsoid;
-            vec3_field(L, "center", "light.center", light.center);
+            vec3_field(L, "center", light_ + "center", light.center);
             read_axes(L, light);
         } else {
-            fail("light.type",
+            fail(light_ + "type",
                  "unknown type '" + type + "' (expected polygon, disk, sphere or ellipsoid)");
         }
     }
@@ -315,11 +343,11 @@ class CaseReader {
     void read_axes(const json& L, Light& light) {
         auto a = L.find("axes");
         if (a == L.end()) {
-            fail("light.axes", "missing");
+            fail(light_ + "axes", "missing");
             return;
         }
         if (!a->is_array() || a->size() != 3) {
-            fail("light.axes",
+            fail(light_ + "axes",
                  a->is_array()
                      ? fmt::format("has {} vectors; an ellipsoid needs exactly 3", a->size())
                      : "must be an array of exactly 3 vectors");
@@ -327,15 +355,15 @@ class CaseReader {
         }
         bool ok = true;
         for (std::size_t i = 0; i < 3; ++i) {
-            const std::string path = fmt::format("light.axes[{}]", i);
+            const std::string path = light_ + fmt::format("axes[{}]", i);
             ok = (vec3((*a)[i], path, light.axes[i]) && nonzero(light.axes[i], path)) && ok;
         }
         if (!ok) return;
         for (std::size_t i = 0; i < 3; ++i)
             for (std::size_t j = i + 1; j < 3; ++j)
                 if (!orthogonal(light.axes[i], light.axes[j]))
-                    fail(fmt::format("light.axes[{}]", j),
-                         fmt::format("must be orthogonal to light.axes[{}]", i));
+                    fail(light_ + fmt::format("axes[{}]", j),
+                         fmt::format("must be orthogonal to {}axes[{}]", light_, i));
     }
 
     void read_material(const json& c, Material& m) {
@@ -344,27 +372,31 @@ class CaseReader {
             fail("material", it == c.end() ? "missing" : "must be an object");
             return;
         }
-        const json& M = *it;
+        read_material_fields(*it, m);
+    }
+
+    void read_material_fields(const json& M, Material& m) {
         auto d = M.find("distribution");
         if (d == M.end() || !d->is_string()) {
-            fail("material.distribution", d == M.end() ? "missing" : "must be a string");
+            fail(material_ + "distribution", d == M.end() ? "missing" : "must be a string");
             return;
         }
         const std::string name = d->get<std::string>();
         if (name == "phong" || name == "blinn") {
             m.distribution = name == "phong" ? Distribution::Phong : Distribution::Blinn;
-            if (number(M, "exponent", "material.exponent", m.exponent) &&
+            if (number(M, "exponent", material_ + "exponent", m.exponent) &&
                 !(m.exponent >= 1.0 && m.exponent <= 100000.0)) {
-                fail("material.exponent", fmt::format("{:g} is outside [1, 100000]", m.exponent));
+                fail(material_ + "exponent",
+                     fmt::format("{:g} is outside [1, 100000]", m.exponent));
             }
         } else if (name == "beckmann" || name == "ggx") {
             m.distribution = name == "ggx" ? Distribution::Ggx : Distribution::Beckmann;
-            if (number(M, "alpha", "material.alpha", m.alpha) &&
+            if (number(M, "alpha", material_ + "alpha", m.alpha) &&
                 !(m.alpha >= 0.001 && m.alpha <= 1.0)) {
-                fail("material.alpha", fmt::format("{:g} is outside [0.001, 1]", m.alpha));
+                fail(material_ + "alpha", fmt::format("{:g} is outside [0.001, 1]", m.alpha));
             }
         } else {
-            fail("material.distribution",
+            fail(material_ + "distribution",
                  "unknown distribution '" + name + "' (expected phong, blinn, beckmann or ggx)");
             return;
         }
@@ -376,9 +408,9 @@ class CaseReader {
     void read_f0(const json& M, Material& m) {
         if (M.find("f0") == M.end()) return;
         double f0 = 0.0;
-        if (!number(M, "f0", "material.f0", f0)) return;
+        if (!number(M, "f0", material_ + "f0", f0)) return;
         if (!(f0 >= 0.0 && f0 <= 1.0)) {
-            fail("material.f0", fmt::format("{:g} is outside [0, 1]", f0));
+            fail(material_ + "f0", fmt::format("{:g} is outside [0, 1]", f0));
             return;
         }
         m.f0 = f0;
@@ -389,6 +421,7 @@ class CaseReader {
     Reporter& rep_;
     std::string where_;
     const ValidationTolerances& tol_;
+    std::string light_, material_;
 };
 
 void put(ordered_json& j, const char* key, const std::optional<double>& v) {
@@ -402,6 +435,21 @@ void put(ordered_json& j, const char* key, const std::optional<double>& v) {
 
 }  // namespace
 
+namespace io_detail {
+
+void read_light_object(Reporter& rep, const std::string& where, const std::string& prefix,
+                       const json& light, const ValidationTolerances& tol, Light& out) {
+    CaseReader(rep, where, tol, prefix, {}).read_light_fields(light, out);
+}
+
+void read_material_object(Reporter& rep, const std::string& where, const std::string& prefix,
+                          const json& material, Material& out) {
+    const ValidationTolerances unused;
+    CaseReader(rep, where, unused, {}, prefix).read_material_fields(material, out);
+}
+
+}  // namespace io_detail
+
 std::optional<CaseSet> parse_cases(const std::string& text, const std::string& name,
                                    const DiagnosticConsumer& diag,
                                    const ValidationTolerances& tol) {
@@ -409,19 +457,7 @@ std::optional<CaseSet> parse_cases(const std::string& text, const std::string& n
     if (!parsed) return std::nullopt;
     const json& doc = *parsed;
     Reporter rep(name, diag);
-    if (!doc.is_object()) {
-        rep.error("", "format", "the file must be a JSON object");
-        return std::nullopt;
-    }
-    auto f = doc.find("format");
-    if (f == doc.end()) {
-        rep.error("", "format", "missing (expected \"arealight-cases/1\")");
-        return std::nullopt;
-    }
-    if (!f->is_string() || f->get<std::string>() != "arealight-cases/1") {
-        rep.error("", "format", "is " + describe(*f) + ", expected \"arealight-cases/1\"");
-        return std::nullopt;
-    }
+    if (!io_detail::check_format(doc, "arealight-cases/1", rep)) return std::nullopt;
     auto cs = doc.find("cases");
     if (cs == doc.end() || !cs->is_array()) {
         rep.error("", "cases", cs == doc.end() ? "missing" : "must be an array of cases");
@@ -509,17 +545,7 @@ std::optional<ResultSet> parse_results(const std::string& text, const std::strin
     if (!parsed) return std::nullopt;
     const json& doc = *parsed;
     Reporter rep(name, diag);
-    if (!doc.is_object()) {
-        rep.error("", "format", "the file must be a JSON object");
-        return std::nullopt;
-    }
-    auto f = doc.find("format");
-    if (f == doc.end() || !f->is_string() || f->get<std::string>() != "arealight-results/1") {
-        rep.error("", "format",
-                  f == doc.end() ? "missing (expected \"arealight-results/1\")"
-                                 : "is " + describe(*f) + ", expected \"arealight-results/1\"");
-        return std::nullopt;
-    }
+    if (!io_detail::check_format(doc, "arealight-results/1", rep)) return std::nullopt;
     auto rs = doc.find("results");
     if (rs == doc.end() || !rs->is_array()) {
         rep.error("", "results", rs == doc.end() ? "missing" : "must be an array");

@@ -31,4 +31,14 @@ std::vector<const Texture2D*> variant_textures(const Variant& v) {
     return out;
 }
 
+std::optional<std::vector<const Texture2D*>> variant_textures(const Variant& v,
+                                                              const DiagnosticConsumer& diag) {
+    try {
+        return variant_textures(v);
+    } catch (const std::exception& e) {
+        if (diag) diag({Severity::Error, "", 0, e.what()});
+        return std::nullopt;
+    }
+}
+
 }  // namespace arealight

@@ -24,13 +24,19 @@ for f in ../shared/validation/*.cases.json; do [ -e "$f" ] && case_files+=("$f")
 for f in ../shared/validation/*.ref.json; do [ -e "$f" ] && result_files+=("$f"); done
 "$out/split_seeds" "$seeds/cases" 64 "${case_files[@]}"
 [ ${#result_files[@]} -gt 0 ] && "$out/split_seeds" "$seeds/results" 64 "${result_files[@]}"
+# Scene files are small: copied whole (libFuzzer takes folders, not files, as a corpus).
+mkdir -p "$seeds/scene"
+n=0
+for f in examples/*scene*.json examples/*/*scene*.json; do
+  [ -e "$f" ] && cp "$f" "$seeds/scene/$((n++)).json"
+done
 
 # Which seed folders and dictionary each target reads.
 declare -A seed_dirs=(
   [fuzz_cases]="fuzz/corpus/cases $seeds/cases"
   [fuzz_results]="fuzz/corpus/results $seeds/results"
   [fuzz_variant]="fuzz/corpus/variant"
-  [fuzz_scene]="fuzz/corpus/scene"
+  [fuzz_scene]="fuzz/corpus/scene $seeds/scene"
 )
 declare -A dicts=([fuzz_variant]=fuzz/variant.dict)
 

@@ -2,7 +2,8 @@
 # Sets up the machine, builds, and runs the main job on the example cases: the
 # oracle, then the exact Phong polygon variant generated, compiled, validated and
 # run on lavapipe and on the CPU mirror, each with its error table; then the
-# error-against-cost report of every Phong polygon method (default shape).
+# error-against-cost report of every Phong polygon method (default shape); then the
+# example scene rendered by the oracle, LTC, the paper's method and exact (out/render).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
@@ -19,3 +20,4 @@ for backend in vulkan cpu; do
 done
 $al report --cases examples/cases.json --variants dist=phong,light=polygon,verts=8,sided=any \
   --out out/report
+DOCS=out/render bash scripts/render_comparison.sh

@@ -8,22 +8,21 @@ const real AL_PI = AL_R(3.14159265358979323846);
 const real AL_TWO_PI = AL_R(6.28318530717958647692);
 const real AL_HALF_PI = AL_R(1.57079632679489661923);
 
-// One case, normalized on the host (CONTRACT.md 1), in double precision, then
-// rounded to fp32 for upload: p moved to the origin, lengths divided by the light's
-// distance, and the frame rotated so that the light's centre lies on +z. Near the
-// light, directions then differ from the pole in small components that fp32 holds
-// to full relative precision (in a world frame the edges' distances to r would
-// carry 6e-8 absolute error). n, v unit; r = 2 (n.v) n - v formed on the host for
-// the same reason. verts = polygon vertices relative to the centre. params =
-// (exponent or alpha, two_sided, vertex count, Schlick f0: 1 when the case has none).
-// 208 bytes, std430.
+// One shading problem as the methods see it, built from the renderer's values by
+// the light's library entry (library_<light>.glsl) in the working precision: p moved
+// to the origin, lengths divided by the light's distance, and the frame rotated so
+// that the light's centre lies on +z. Near the light, directions then differ from
+// the pole in small components that hold their relative precision. n, v unit; r =
+// 2 (n.v) n - v. verts = polygon vertices relative to the centre (AL_MAX_VERTS
+// used). params =
+// (exponent or alpha, two_sided, vertex count, Schlick f0: 1 gives F = 1).
 struct AlCase {
-    vec4 n;
-    vec4 v;
-    vec4 r;
-    vec4 params;
-    vec4 center;
-    vec4 verts[8];
+    rvec4 n;
+    rvec4 v;
+    rvec4 r;
+    rvec4 params;
+    rvec4 center;
+    rvec4 verts[8];
 };
 
 // Odd series 2 w (1 + w^2/3 + w^4/5 + ...) = log((1 + w) / (1 - w)) for |w| <= 0.172.

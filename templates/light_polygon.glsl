@@ -93,7 +93,9 @@ real al_specular_sg(AlCase c, real side, rvec3 r, rvec3 n, real N) {
     np = clamp(np, AL_R(1.0), AL_R(1e5));
     real rr = dot(r, rp), nr = dot(n, rp);
     if (!(rr > AL_R(0.0)) || !(nr > AL_R(0.0))) return AL_R(0.0);
-    real mu = al_exp(N * al_log(rr)) * nr;
+    // (r.rp)^N without the cancellation of 1 - r.rp (dist_phong.glsl): at N = 1e5 the
+    // plain power lost 0.8% to fp32 rounding of the frame.
+    real mu = al_phong_power(r, rp, N) * nr;
     // int mu (rp.w)^np = mu 2 pi moment / (np + 1); specular = (N+2)/(2 pi) times that.
     real unused;
     real moment = al_polygon_moments(c, side, n, rp, np, unused).y;

@@ -4,14 +4,7 @@
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 
-function(expect_exit code)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL code)
-    message(FATAL_ERROR "expected exit ${code}, got ${rc} from: ${ARGN}\nstdout: ${out}\nstderr: ${err}")
-  endif()
-  set(LAST_ERR "${err}" PARENT_SCOPE)
-  set(LAST_OUT "${out}" PARENT_SCOPE)
-endfunction()
+include("${CMAKE_CURRENT_LIST_DIR}/cli_support.cmake")
 
 # A malformed case: exit 1, the message names file, case and field, and the
 # existing output keeps its bytes while a new output path is never created.
@@ -36,7 +29,7 @@ expect_exit(1 "${AREALIGHT}" reference --cases "${WORK}/no-such-file.json" --out
 expect_exit(2 "${AREALIGHT}")
 expect_exit(2 "${AREALIGHT}" reference --cases x.json)
 expect_exit(2 "${AREALIGHT}" frobnicate)
-foreach(cmd variants eval reference generate compare bench report sweep)
+foreach(cmd variants eval reference generate compare bench report sweep compile)
   expect_exit(0 "${AREALIGHT}" ${cmd} --help)
   if(NOT LAST_OUT MATCHES "--")
     message(FATAL_ERROR "${cmd} --help printed no options: ${LAST_OUT}")
@@ -223,3 +216,40 @@ foreach(word "--axis" "alpha" "view" "ndf")
     message(FATAL_ERROR "sweep --help does not mention ${word}: ${LAST_OUT}")
   endif()
 endforeach()
+
+# compile: #include from -I folders, errors at the included file's line, nothing written on
+# failure (a missing include, a stage-less extension), and a depfile listing the includes.
+file(WRITE "${WORK}/compile/lib/included.glsl" "// a library\n\nfloat twice(float x) { return x + x; }\n")
+file(WRITE "${WORK}/compile/bad/included.glsl" "// a library\n\nfloat twice(float x) { return undeclared_thing; }\n")
+file(WRITE "${WORK}/compile/main.comp" "#version 450
+layout(local_size_x = 1) in;
+#include \"included.glsl\"
+layout(std430, binding = 0) buffer B { float v[]; };
+void main() { v[0] = twice(v[0]); }
+")
+expect_exit(0 "${AREALIGHT}" compile "${WORK}/compile/main.comp" -o "${WORK}/compile/main.spv"
+  -I "${WORK}/compile/nowhere" -I "${WORK}/compile/lib" --depfile "${WORK}/compile/main.d")
+file(READ "${WORK}/compile/main.spv" spv HEX LIMIT 4)
+if(NOT spv STREQUAL "03022307")
+  message(FATAL_ERROR "compile wrote no SPIR-V (first word ${spv})")
+endif()
+file(READ "${WORK}/compile/main.d" depfile)
+if(NOT depfile MATCHES "main.spv: [^\n]*main.comp[^\n]*\n *[^\n]*lib/included.glsl")
+  message(FATAL_ERROR "depfile does not list the source and the include: ${depfile}")
+endif()
+expect_exit(1 "${AREALIGHT}" compile "${WORK}/compile/main.comp" -o "${WORK}/compile/bad.spv" -I "${WORK}/compile/bad")
+if(NOT LAST_ERR MATCHES "bad/included.glsl:3: [^\n]*undeclared_thing" OR EXISTS "${WORK}/compile/bad.spv")
+  message(FATAL_ERROR "an error in an included file is not reported at its line: ${LAST_ERR}")
+endif()
+expect_exit(1 "${AREALIGHT}" compile "${WORK}/compile/main.comp" -o "${WORK}/compile/missing.spv" -I "${WORK}/compile/nowhere")
+if(NOT LAST_ERR MATCHES "main.comp:3: [^\n]*not found \\(searched [^\n]*nowhere\\)[^\n]*included.glsl"
+   OR EXISTS "${WORK}/compile/missing.spv")
+  message(FATAL_ERROR "a missing include is not a clear error, or an output was written: ${LAST_ERR}")
+endif()
+file(WRITE "${WORK}/compile/main.glsl" "#version 450\nvoid main() {}\n")
+expect_exit(2 "${AREALIGHT}" compile "${WORK}/compile/main.glsl" -o "${WORK}/compile/nostage.spv")
+if(NOT LAST_ERR MATCHES "no shader stage" OR EXISTS "${WORK}/compile/nostage.spv")
+  message(FATAL_ERROR "a stage-less extension: ${LAST_ERR}")
+endif()
+expect_exit(0 "${AREALIGHT}" compile "${WORK}/compile/main.glsl" --stage comp -o "${WORK}/compile/nostage.spv")
+expect_exit(0 "${AREALIGHT}" compile --help)

@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "arealight/case_io.hpp"
+#include "arealight/scene.hpp"
 
 using namespace arealight;
 using Catch::Matchers::Contains;
@@ -256,9 +257,11 @@ TEST_CASE("malformed: a deeply nested format value is named, not printed", "[io]
     CHECK_FALSE(parse_cases(R"({"format": )" + nested + R"(, "cases": []})", "deep.json", collect));
     CHECK_FALSE(parse_results(R"({"format": )" + nested + R"(, "results": []})", "deep.json",
                               collect));
-    REQUIRE(msgs.size() == 2);
+    CHECK_FALSE(parse_scene(R"({"format": )" + nested + "}", "deep.json", collect));
+    REQUIRE(msgs.size() == 3);
     CHECK(msgs[0] == "deep.json: field 'format': is an array, expected \"arealight-cases/1\"");
     CHECK(msgs[1] == "deep.json: field 'format': is an array, expected \"arealight-results/1\"");
+    CHECK(msgs[2] == "deep.json: field 'format': is an array, expected \"arealight-scene/1\"");
 }
 
 TEST_CASE("malformed: unreadable file", "[io]") {

@@ -1,9 +1,13 @@
 // compile_glsl: glslang + SPIRV-Tools in process, diagnostics with file and line.
 #include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
 #include "arealight/compiler.hpp"
+
+#include <unistd.h>  // getpid: scratch folders of concurrent test runs differ
 
 using namespace arealight;
 
@@ -133,6 +137,151 @@ TEST_CASE("a link error (no entry point) fails with an error diagnostic", "[comp
     CHECK_FALSE(compile_glsl(source, "nomain.comp", CompileOptions{}, diag.consumer()));
     INFO(diag.text());
     CHECK(diag.errors() >= 1);
+}
+
+namespace {
+
+// A fresh folder per test case, removed at the end: sources that #include each other.
+class ScratchFolder {
+  public:
+    explicit ScratchFolder(const std::string& name)
+        : path_(std::filesystem::temp_directory_path() /
+                ("arealight_test_" + name + "_" + std::to_string(::getpid()))) {
+        std::filesystem::remove_all(path_);
+        std::filesystem::create_directories(path_);
+    }
+    ~ScratchFolder() {
+        std::error_code ec;
+        std::filesystem::remove_all(path_, ec);
+    }
+    ScratchFolder(const ScratchFolder&) = delete;
+    ScratchFolder& operator=(const ScratchFolder&) = delete;
+
+    std::string write(const std::string& relative, const std::string& text) const {
+        const auto path = path_ / relative;
+        std::filesystem::create_directories(path.parent_path());
+        std::ofstream(path) << text;
+        return path.string();
+    }
+    std::string operator/(const std::string& relative) const { return (path_ / relative).string(); }
+
+  private:
+    std::filesystem::path path_;
+};
+
+const char* const kIncludingShader = R"(#version 450
+layout(local_size_x = 1) in;
+#include "included.glsl"
+layout(std430, binding = 0) buffer B { float v[]; };
+void main() { v[0] = twice(v[0]); }
+)";
+
+// kIncludingShader compiled as src/main.comp of `dir`, with `dir`/lib as the include folder.
+struct IncludeRun {
+    bool compiled = false;
+    std::string shader;  // the path it was compiled as
+    Collected diag;
+    std::vector<std::string> included;
+};
+IncludeRun compile_including(const ScratchFolder& dir, bool includes = true) {
+    IncludeRun run;
+    run.shader = dir.write("src/main.comp", kIncludingShader);
+    CompileOptions options;
+    options.includes = includes;
+    options.include_dirs = {dir / "lib"};
+    run.compiled = compile_glsl(kIncludingShader, run.shader, options, run.diag.consumer(),
+                                &run.included)
+                       .has_value();
+    return run;
+}
+
+}  // namespace
+
+TEST_CASE("#include is found in an include folder without an #extension line", "[compiler]") {
+    ScratchFolder dir("include_ok");
+    const std::string lib = dir.write("lib/included.glsl",
+                                      "#ifndef INCLUDED\n#define INCLUDED\n"
+                                      "float twice(float x) { return x + x; }\n#endif\n");
+    const IncludeRun run = compile_including(dir);
+    INFO(run.diag.text());
+    CHECK(run.compiled);
+    CHECK(run.diag.errors() == 0);
+    CHECK(run.included == std::vector<std::string>{lib});
+}
+
+TEST_CASE("an error in an included file names that file and its line", "[compiler]") {
+    ScratchFolder dir("include_error");
+    dir.write("lib/included.glsl",
+              "// line 1\n\nfloat twice(float x) { return undeclared_thing * x; }\n");
+    const IncludeRun run = compile_including(dir);
+    INFO(run.diag.text());
+    CHECK_FALSE(run.compiled);
+    REQUIRE(run.diag.errors() >= 1);
+    const Diagnostic& first = run.diag.all.front();
+    CHECK(first.file == dir / "lib/included.glsl");
+    CHECK(first.line == 3);
+    CHECK(first.message.find("undeclared_thing") != std::string::npos);
+}
+
+TEST_CASE("a missing include names the header and the folders searched", "[compiler]") {
+    ScratchFolder dir("include_missing");
+    const IncludeRun run = compile_including(dir);
+    INFO(run.diag.text());
+    CHECK_FALSE(run.compiled);
+    REQUIRE(run.diag.errors() >= 1);
+    const Diagnostic& first = run.diag.all.front();
+    CHECK(first.file == run.shader);
+    CHECK(first.line == 3);
+    CHECK(first.message.find("included.glsl") != std::string::npos);
+    CHECK(first.message.find(dir / "src") != std::string::npos);
+    CHECK(first.message.find(dir / "lib") != std::string::npos);
+}
+
+TEST_CASE("a quoted include prefers the including file's folder", "[compiler]") {
+    ScratchFolder dir("include_order");
+    const std::string near =
+        dir.write("src/included.glsl", "float twice(float x) { return 2.0 * x; }\n");
+    dir.write("lib/included.glsl", "this would not compile\n");
+    const IncludeRun run = compile_including(dir);
+    INFO(run.diag.text());
+    CHECK(run.compiled);
+    CHECK(run.included == std::vector<std::string>{near});
+}
+
+TEST_CASE("without CompileOptions::includes, #include is an error", "[compiler]") {
+    ScratchFolder dir("include_off");
+    dir.write("src/included.glsl", "float twice(float x) { return 2.0 * x; }\n");
+    const IncludeRun run = compile_including(dir, false);
+    CHECK_FALSE(run.compiled);
+    CHECK(run.diag.errors() >= 1);
+}
+
+TEST_CASE("the stage comes from the extension and reaches the entry point", "[compiler]") {
+    CHECK(stage_from_path("a/b.frag") == ShaderStage::Fragment);
+    CHECK(stage_from_path("x.vert") == ShaderStage::Vertex);
+    CHECK(stage_from_path("x.tesc") == ShaderStage::TessControl);
+    CHECK(stage_from_path("x.tese") == ShaderStage::TessEvaluation);
+    CHECK(stage_from_path("x.geom") == ShaderStage::Geometry);
+    CHECK(stage_from_path("dir.comp/x.comp") == ShaderStage::Compute);
+    CHECK_FALSE(stage_from_path("x.glsl"));
+    CHECK_FALSE(stage_from_path("dir.frag/x"));
+
+    const std::string fragment =
+        "#version 450\nlayout(location = 0) out vec4 color;\nvoid main() { color = vec4(1.0); }\n";
+    CompileOptions options;
+    options.stage = ShaderStage::Fragment;
+    Collected diag;
+    const auto spirv = compile_glsl(fragment, "x.frag", options, diag.consumer());
+    INFO(diag.text());
+    REQUIRE(spirv);
+    // OpEntryPoint (opcode 15): its first operand is the execution model, Fragment = 4.
+    constexpr uint32_t kOpEntryPoint = 15, kExecutionModelFragment = 4;
+    uint32_t model = ~0u;
+    for (std::size_t at = 5; at < spirv->size(); at += (*spirv)[at] >> 16) {
+        if (((*spirv)[at] & 0xffffu) == kOpEntryPoint) model = (*spirv)[at + 1];
+        if (((*spirv)[at] >> 16) == 0) break;
+    }
+    CHECK(model == kExecutionModelFragment);
 }
 
 TEST_CASE("an empty consumer drops diagnostics without failing differently", "[compiler]") {

@@ -100,35 +100,37 @@ TEST_CASE("Gauss-Legendre rules integrate polynomials of degree 2n-1 exactly", "
     }
 }
 
-TEST_CASE("a variant stitches common, its family's templates, then the entry point",
+TEST_CASE("a variant stitches the library types, common, its family's templates, the light's "
+          "library entry, then the kernel",
           "[generator]") {
     // Today's lists, as the family table gives them.
     const auto exact =
         variant_templates(parse("dist=phong,method=exact,light=polygon"), Language::Glsl);
-    CHECK(exact ==
-          std::vector<std::string>{"templates/common.glsl", "templates/dist_phong.glsl",
-                                   "templates/phong_edge.glsl", "templates/method_exact_phong.glsl",
-                                   "templates/phong_boundary.glsl", "templates/polygon.glsl",
-                                   "templates/light_polygon.glsl", "templates/entry.glsl"});
+    CHECK(exact == std::vector<std::string>{
+                       "templates/library_types.glsl", "templates/common.glsl",
+                       "templates/dist_phong.glsl", "templates/phong_edge.glsl",
+                       "templates/method_exact_phong.glsl", "templates/phong_boundary.glsl",
+                       "templates/polygon.glsl", "templates/light_polygon.glsl",
+                       "templates/library_polygon.glsl", "templates/kernel_polygon.glsl"});
     CHECK(variant_templates(parse("dist=phong,method=arvo,light=polygon,verts=3"), Language::Cpp) ==
-          std::vector<std::string>{"templates/common.glsl", "templates/dist_phong.glsl",
-                                   "templates/phong_edge.glsl", "templates/method_arvo_phong.glsl",
-                                   "templates/polygon.glsl", "templates/light_polygon.glsl"});
+          std::vector<std::string>{"templates/library_types.glsl", "templates/common.glsl",
+                                   "templates/dist_phong.glsl", "templates/phong_edge.glsl",
+                                   "templates/method_arvo_phong.glsl", "templates/polygon.glsl",
+                                   "templates/light_polygon.glsl",
+                                   "templates/library_polygon.glsl"});
     CHECK(variant_templates(parse("dist=phong,method=pearson,light=polygon,fit=paper"),
-                            Language::Glsl)[3] == "templates/method_peak_phong.glsl");
-    CHECK(variant_templates(parse("dist=phong,method=point,light=polygon"), Language::Cpp) ==
-          std::vector<std::string>{"templates/common.glsl", "templates/dist_phong.glsl",
-                                   "templates/polygon.glsl", "templates/light_polygon.glsl"});
+                            Language::Glsl)[4] == "templates/method_peak_phong.glsl");
 
     // Every family's templates exist, in its row's order, for both languages.
     for (const auto& v : enumerate_variants()) {
         const VariantFamily* family = find_family(v);
         REQUIRE(family);
-        std::vector<std::string> want = {"templates/common.glsl"};
+        std::vector<std::string> want = {"templates/library_types.glsl", "templates/common.glsl"};
         for (const auto& t : family->templates) want.push_back("templates/" + t);
+        want.push_back("templates/library_polygon.glsl");
         INFO(canonical_name(v));
         CHECK(variant_templates(v, Language::Cpp) == want);
-        want.push_back("templates/entry.glsl");
+        want.push_back("templates/kernel_polygon.glsl");
         CHECK(variant_templates(v, Language::Glsl) == want);
         for (const auto& path : want) {
             INFO(path);

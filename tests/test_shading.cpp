@@ -29,10 +29,12 @@ constexpr double kExactMaxTol = 1e-4;
 constexpr double kExactFp32MaxTol = 1e-4;
 // The two backends run the same math. In fp64 every operation is IEEE-rounded and
 // the transcendentals are the templates' own, so they agree to rounding (measured:
-// bit-identical; the bar is issue 4's). In fp32 the drivers' sin/cos/exp differ
-// (measured worst 2.1e-5 on these cases, a moment of 1.5e-4).
+// bit-identical; the bar is issue 4's). In fp32 the drivers' sin/cos/exp differ,
+// and each backend builds the library's frame from the fp32 inputs with its own
+// rounding (lavapipe contracts to FMA), a direction difference of ~1e-7 that a lobe
+// of exponent N amplifies by N theta (measured worst 3.9e-5: point, specular).
 constexpr double kBackendTol = 1e-5;
-constexpr double kBackendFp32Tol = 3e-5;
+constexpr double kBackendFp32Tol = 1e-4;
 
 // Random convex polygons around the mirror direction (sometimes crossing the
 // horizon), exponents log-uniform in [1, 1e5], a third of them two-sided.
@@ -245,8 +247,9 @@ const PeakBar kPeakBars[] = {
 };
 // The fits' clamps and the near/far choice are branch points, so fp32 rounding
 // differences between the backends can grow past one ulp; measured worst 1.8e-5 on
-// these cases, 9.3e-5 (specular of N = 1.4) over 600 other random cases.
-constexpr double kPeakBackendTol = 2e-4;
+// these cases, 9.3e-5 (specular of N = 1.4) over 600 other random cases; with the
+// frame built in fp32 on each backend (kBackendFp32Tol), 3.5e-4 (lorentz, fit=paper).
+constexpr double kPeakBackendTol = 5e-4;
 
 }  // namespace
 

@@ -1,4 +1,5 @@
-// GLSL compute shader -> validated (and optionally optimized) SPIR-V, in process.
+// GLSL shader (any graphics or compute stage) -> validated (and optionally optimized) SPIR-V,
+// in process, with `#include` resolved from the file system when asked.
 #pragma once
 
 #include <cstddef>
@@ -11,19 +12,39 @@
 
 namespace arealight {
 
+enum class ShaderStage { Vertex, TessControl, TessEvaluation, Geometry, Fragment, Compute };
+
+// The stage glslc infers from a file name's last extension: .vert .tesc .tese .geom .frag
+// .comp; nullopt for any other.
+std::optional<ShaderStage> stage_from_path(const std::string& path);
+// The extension without its dot ("comp"), as stage_from_path reads it.
+const char* to_string(ShaderStage stage);
+
 struct CompileOptions {
     bool optimize = true;        // spvtools::Optimizer::RegisterPerformancePasses
     std::string entry = "main";  // SPIR-V entry point name; the GLSL function stays main()
+    ShaderStage stage = ShaderStage::Compute;
+    // `#include "name"` and `#include <name>` (GL_GOOGLE_include_directive, enabled without an
+    // #extension line, which also enables `#line N "file"`). Off for the generated kernels,
+    // which include nothing (enabling it adds an OpSourceExtension). "name" is searched in the
+    // including file's folder (the folder of `source_name` for the top file), then in each of
+    // `include_dirs` in order; <name> only in `include_dirs`. Errors in an included file
+    // name that file and its line.
+    bool includes = false;
+    std::vector<std::string> include_dirs;
 };
 
-// Compiles one compute shader for Vulkan 1.1 / SPIR-V 1.3 and validates the result (again after
+// Compiles one shader for Vulkan 1.1 / SPIR-V 1.3 and validates the result (again after
 // optimizing). `source_name` names the text in diagnostics until a `#line N "file"` directive
 // (GL_GOOGLE_cpp_style_line_directive) renames it. Every compiler and validator message goes to
-// `diag`; on any error returns nullopt. Safe to call from several threads at once.
+// `diag`; on any error returns nullopt. When `included_files` is given it receives the path of
+// every file an #include read, once each, in first-read order (a build's dependencies), also
+// on failure. Safe to call from several threads at once.
 std::optional<std::vector<uint32_t>> compile_glsl(const std::string& source,
                                                   const std::string& source_name,
                                                   const CompileOptions& options,
-                                                  const DiagnosticConsumer& diag);
+                                                  const DiagnosticConsumer& diag,
+                                                  std::vector<std::string>* included_files = nullptr);
 
 // Number of instructions after the 5-word header; stops at the first malformed word count.
 std::size_t spirv_instruction_count(const std::vector<uint32_t>& spirv);

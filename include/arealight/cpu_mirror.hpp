@@ -10,14 +10,16 @@
 
 namespace arealight {
 
-// Shades `count` packed cases (the AlCase layout of templates/common.glsl) into
-// 4 floats each, exactly as the shader's main() does. textures[k] is the table the
+// Shades `count` packed cases (arealight/case_layout.hpp) into 4 floats each,
+// exactly as the validation kernel's main() does: the library function's diffuse
+// and specular, and with `second` the variant's ndf or moment. textures[k] is the table the
 // variant's k-th sampler reads (VariantFamily::samplers, the Vulkan run's binding
 // 2 + k; variant_textures() in include/arealight/evaluator.hpp gives them); a sampler
 // without one (k >= texture_count) reads NaN. The samplers are thread_local: one run
 // per thread at a time, and the textures must outlive the call.
 using MirrorFn = void (*)(const void* cases, float* results, std::size_t count,
-                          const Texture2D* const* textures, std::size_t texture_count);
+                          const Texture2D* const* textures, std::size_t texture_count,
+                          bool second);
 
 struct MirrorEntry {
     const char* variant;  // canonical name

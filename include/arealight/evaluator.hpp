@@ -9,7 +9,9 @@
 #include <vector>
 
 #include "arealight/case.hpp"
+#include "arealight/case_layout.hpp"
 #include "arealight/diagnostics.hpp"
+#include "arealight/generator.hpp"
 #include "arealight/results.hpp"
 #include "arealight/texture.hpp"
 #include "arealight/variant.hpp"
@@ -23,13 +25,13 @@ const char* to_string(Backend b);
 // polygon no larger than `verts`, and sidedness it supports.
 bool case_applies(const Variant& v, const Case& c);
 
-// Cases in the AlCase layout of templates/common.glsl (52 floats each), formed in
-// double: p moved to the origin, lengths divided by the distance to the light's
-// centre, the frame rotated to put that centre on +z, n, v and r unit, polygon
-// vertices as offsets from the centre.
+// Whether the variant computes a quantity beside diffuse and specular (ndf or
+// moment: its family's second_quantity).
+bool has_second_quantity(const Variant& v);
+
+// Cases in the validation kernel's layout (arealight/case_layout.hpp): each case's
+// values as given, rounded to fp32. No geometry: the library function does it.
 std::vector<float> pack_cases(const std::vector<const Case*>& cases);
-constexpr std::size_t kFloatsPerCase = 52;
-constexpr std::size_t kFloatsPerResult = 4;
 
 struct EvalOptions {
     Backend backend = Backend::Vulkan;
@@ -55,10 +57,13 @@ class Evaluator {
     // Results for the applicable cases, in file order; nullopt on failure.
     std::optional<ResultSet> run(const Variant& v, const CaseSet& cases,
                                  const DiagnosticConsumer& diag, EvalStats* stats = nullptr);
-    // Raw 4-float results for already-packed cases (benchmarks reuse one packing).
+    // Raw 4-float results for already-packed cases (benchmarks reuse one packing):
+    // by default only what the library function returns (diffuse, specular), the
+    // kernel that is timed and counted; KernelOutputs::All adds ndf or moment.
     bool run_packed(const Variant& v, const std::vector<float>& packed, std::size_t count,
                     std::vector<float>& results, const DiagnosticConsumer& diag,
-                    double* seconds = nullptr);
+                    double* seconds = nullptr,
+                    KernelOutputs outputs = KernelOutputs::Shading);
 
   private:
     struct Impl;
@@ -74,11 +79,16 @@ class Evaluator {
 // sampler, for a sampler name it has no table for. Evaluator::run and run_packed bind
 // these on both backends.
 std::vector<const Texture2D*> variant_textures(const Variant& v);
+// The same, with the error as a diagnostic instead of an exception.
+std::optional<std::vector<const Texture2D*>> variant_textures(const Variant& v,
+                                                              const DiagnosticConsumer& diag);
 
-// GLSL -> validated (optimized) SPIR-V for a variant; compiler messages are
-// prefixed with the variant's name.
+// GLSL -> validated (optimized) SPIR-V of a variant's validation kernel; compiler
+// messages are prefixed with the variant's name. Shading: the kernel that is timed
+// and counted (the library function alone).
 std::optional<std::vector<uint32_t>> build_spirv(const Variant& v, bool optimize,
-                                                 const DiagnosticConsumer& diag);
+                                                 const DiagnosticConsumer& diag,
+                                                 KernelOutputs outputs = KernelOutputs::Shading);
 // Same, for GLSL text already stitched for `v` (tests inject broken templates).
 std::optional<std::vector<uint32_t>> build_spirv(const Variant& v, const std::string& glsl,
                                                  bool optimize, const DiagnosticConsumer& diag);

@@ -3,9 +3,12 @@
 #pragma once
 
 #include <functional>
+#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "arealight/diagnostics.hpp"
 #include "arealight/variant.hpp"
 
 namespace arealight {
@@ -15,19 +18,57 @@ enum class Language {
     Cpp,   // the same math as C++ over GLM, for the CPU mirror
 };
 
-// Template files of a variant, in stitch order: shared math, distribution,
-// method, light, then (GLSL only) the entry point. Paths are "templates/NAME.glsl".
+// Template files of a variant's kernel, in stitch order: the library's types,
+// shared math, the family's templates (distribution, method, light), the light's
+// library entry, then (GLSL only) the light's validation kernel. Paths are
+// "templates/NAME.glsl".
 std::vector<std::string> variant_templates(const Variant& v, Language lang);
 
-// The stitched source. Deterministic: the same variant gives the same bytes.
-// Every template chunk starts with `#line 1 "templates/NAME.glsl"` and is followed by a
-// `#line` back to the generated text, so compiler messages name the template and line.
-std::string generate_source(const Variant& v, Language lang);
+// What a library's functions say of themselves beyond variant and domain: by
+// canonical variant name, one comment line of measured error and cost.
+struct LibraryOptions {
+    std::map<std::string, std::string> measured;
+};
+
+// The shading library of CONTRACT.md 5 for these variants: GLSL (no #version, no
+// entry point) or, for the CPU mirror, the same text as C++ over GLM. One public
+// function per variant, arealight_<light>_<dist>; every other name is moved into
+// the variant's namespace al_<light>_<dist>_ (library_rename). nullopt with a
+// diagnostic when two variants share a light type and distribution or a variant has
+// no implementation. Deterministic.
+std::optional<std::string> generate_library(const std::vector<Variant>& variants, Language lang,
+                                            const LibraryOptions& opt,
+                                            const DiagnosticConsumer& diag);
+
+// "arealight_polygon_ggx".
+std::string library_function_name(const Variant& v);
+// The macro that sets a sampler's binding ("AREALIGHT_POLYGON_GGX_LTC_MATRIX_BINDING"),
+// for a sampler name as the family row spells it.
+std::string sampler_binding_macro(const Variant& v, const std::string& sampler);
+// Template text moved into the variant's namespace, as the library writes it:
+// al_x -> al_<light>_<dist>_x, AL_X -> AL_<LIGHT>_<DIST>_X, AlX -> Al<Light><Dist>X,
+// and the precision words (real, rvec3, ...) -> al_<light>_<dist>_real, ...;
+// comments and strings are kept.
+std::string library_rename(const std::string& text, const Variant& v);
+
+// Which results the validation kernel writes: Shading, the library function's
+// diffuse and specular (what a renderer pays for: timed and counted), or All, also
+// the family's second quantity (ndf or moment) from a second call.
+enum class KernelOutputs { Shading, All };
+
+// The validation kernel (GLSL: a compute shader over cases; see
+// templates/kernel_<light>.glsl) or the variant's library as C++ (Language::Cpp, for
+// the CPU mirror). Deterministic. Every template chunk starts with
+// `#line 1 "templates/NAME.glsl"` and is followed by a `#line` back to the generated
+// text, so compiler messages name the template and line.
+std::string generate_source(const Variant& v, Language lang,
+                            KernelOutputs outputs = KernelOutputs::All);
 
 // Where template text comes from: the embedded copies by default; tests inject
 // modified text (a deliberately broken template) through this.
 using TemplateLookup = std::function<const std::string*(const std::string& path)>;
-std::string generate_source(const Variant& v, Language lang, const TemplateLookup& lookup);
+std::string generate_source(const Variant& v, Language lang, const TemplateLookup& lookup,
+                            KernelOutputs outputs = KernelOutputs::All);
 
 // The text of an embedded template, or nullptr when unknown.
 const std::string* template_text(const std::string& path);

@@ -1,0 +1,101 @@
+#include "compile.hpp"
+
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+
+#include "arealight/atomic_file.hpp"
+#include "arealight/compiler.hpp"
+
+namespace arealight::cli {
+
+namespace {
+
+enum Exit { kOk = 0, kBadInput = 1, kUsage = 2, kRuntime = 3 };
+
+// Compiler diagnostics carry their position apart from the message: print it gcc-style, so
+// that an error in an included file reads `lib.glsl:12: ...`.
+void print_diagnostic(const Diagnostic& d) {
+    std::string where;
+    if (d.line > 0) {
+        where = fmt::format("{}:{}: ", d.file, d.line);
+    } else if (!d.file.empty() && d.message.rfind(d.file + ":", 0) != 0) {
+        where = d.file + ": ";  // unless the message (a write failure) already names it
+    }
+    fmt::print(stderr, "arealight: {}: {}{}\n", to_string(d.severity), where, d.message);
+}
+
+// Make's rule syntax: a space in a path is escaped, as gcc -MD writes it.
+std::string make_escaped(const std::string& path) {
+    std::string out;
+    for (char c : path) {
+        if (c == ' ' || c == '#') out += '\\';
+        if (c == '$') out += '$';
+        out += c;
+    }
+    return out;
+}
+
+}  // namespace
+
+CLI::App* add_compile_command(CLI::App& app, CompileArgs& args) {
+    auto* cmd = app.add_subcommand(
+        "compile",
+        "Compile a GLSL shader that may #include arealight libraries to validated, optimized "
+        "SPIR-V (Vulkan 1.1, SPIR-V 1.3). The stage comes from the extension (.vert .tesc "
+        ".tese .geom .frag .comp). #include \"name\" is searched beside the including file, "
+        "then in each -I folder; no #extension line is needed. Nothing is written on error");
+    cmd->add_option("shader", args.shader, "GLSL source file")->required();
+    cmd->add_option("-o,--out", args.out, "SPIR-V file to write")->required();
+    cmd->add_option("-I,--include-dir", args.include_dirs, "include folder (repeatable, in order)");
+    cmd->add_option("--stage", args.stage, "stage when the extension does not say it")
+        ->check(CLI::IsMember({"vert", "tesc", "tese", "geom", "frag", "comp"}));
+    cmd->add_option("--depfile", args.depfile,
+                    "also write a Makefile rule: OUT depends on SHADER and every included file "
+                    "(CMake's DEPFILE, ninja's depfile)");
+    cmd->add_flag("--no-opt", args.no_opt, "skip the SPIRV-Tools performance passes");
+    return cmd;
+}
+
+int run_compile(const CompileArgs& args) {
+    CompileOptions options;
+    options.optimize = !args.no_opt;
+    options.includes = true;
+    options.include_dirs = args.include_dirs;
+    const auto stage = args.stage.empty() ? stage_from_path(args.shader)
+                                          : stage_from_path("." + args.stage);
+    if (!stage) {
+        print_diagnostic({Severity::Error, args.shader, 0,
+                          "no shader stage for this extension: name it .vert, .tesc, .tese, "
+                          ".geom, .frag or .comp, or give --stage"});
+        return kUsage;
+    }
+    options.stage = *stage;
+
+    std::ifstream in(args.shader, std::ios::binary);
+    if (!in) {
+        print_diagnostic({Severity::Error, args.shader, 0, "cannot read"});
+        return kBadInput;
+    }
+    const std::string source((std::istreambuf_iterator<char>(in)),
+                             std::istreambuf_iterator<char>());
+
+    std::vector<std::string> included;
+    const auto spirv = compile_glsl(source, args.shader, options, print_diagnostic, &included);
+    if (!spirv) return kBadInput;
+
+    const std::string bytes(reinterpret_cast<const char*>(spirv->data()),
+                            spirv->size() * sizeof(uint32_t));
+    if (!args.depfile.empty()) {
+        std::string rule = make_escaped(args.out) + ": " + make_escaped(args.shader);
+        for (const auto& file : included) rule += " \\\n  " + make_escaped(file);
+        rule += "\n";
+        if (!write_file_atomic(args.depfile, rule, print_diagnostic)) return kRuntime;
+    }
+    if (!write_file_atomic(args.out, bytes, print_diagnostic)) return kRuntime;
+    return kOk;
+}
+
+}  // namespace arealight::cli

@@ -1,0 +1,27 @@
+// `arealight compile`: a small glslc for shaders that #include arealight libraries (glslang +
+// SPIRV-Tools in process). Hooked into cli/main.cpp with add_compile_command before parsing and
+// run_compile when the subcommand was parsed.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+namespace arealight::cli {
+
+struct CompileArgs {
+    std::string shader;
+    std::string out;
+    std::vector<std::string> include_dirs;
+    std::string stage;    // empty: from the shader's extension
+    std::string depfile;  // empty: none
+    bool no_opt = false;
+};
+
+CLI::App* add_compile_command(CLI::App& app, CompileArgs& args);
+
+// Exit codes as cli/main.cpp: 0 ok, 1 unreadable shader or compile error, 2 no stage for the
+// extension, 3 write failure.
+int run_compile(const CompileArgs& args);
+
+}  // namespace arealight::cli

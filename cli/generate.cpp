@@ -1,0 +1,121 @@
+#include "generate.hpp"
+
+#include <fmt/format.h>
+
+#include "arealight/atomic_file.hpp"
+#include "arealight/compiler.hpp"
+#include "arealight/evaluator.hpp"
+#include "arealight/generator.hpp"
+#include "arealight/library_tables.hpp"
+#include "arealight/scene_select.hpp"
+
+namespace arealight::cli {
+namespace {
+
+enum Exit { kOk = 0, kBadInput = 1, kUsage = 2, kRuntime = 3 };
+
+// Each function's comment line of measured error and cost, from the data built in
+// (data/quality/measured.json, made from the reports by `arealight quality`).
+LibraryOptions measured_comments(const std::vector<Variant>& variants) {
+    LibraryOptions opt;
+    for (const auto& v : variants) {
+        const std::string name = canonical_name(v);
+        const MeasuredVariant* m = shipped_quality().find(name);
+        if (!m) continue;
+        std::string errors;
+        for (const auto& [quantity, value] : m->rel_l2)
+            errors += fmt::format("{}{} {:.2g}", errors.empty() ? "" : ", ", quantity, value);
+        opt.measured[name] = fmt::format(
+            "Measured ({}, {} cases, relL2): {}. Cost on lavapipe: {} x86-64 instructions, "
+            "{:.2g}x the point light's time.",
+            m->report, m->cases, errors, m->x86_instructions, m->ratio_to_point);
+    }
+    return opt;
+}
+
+// The library of `variants`, checked by compiling it into each variant's kernel's
+// stage (a written library is a library that compiles), then written.
+int write_library(const std::vector<Variant>& variants, const GenerateArgs& args,
+                  const DiagnosticConsumer& diag) {
+    auto text = generate_library(variants, Language::Glsl, measured_comments(variants), diag);
+    if (!text) return kBadInput;
+    for (const auto& v : variants)
+        if (!build_spirv(v, true, diag)) return kRuntime;
+    if (!args.tables.empty() && !write_library_tables(variants, args.tables, diag)) return kRuntime;
+    if (!write_file_atomic(args.library, *text, diag)) return kRuntime;
+    return kOk;
+}
+
+}  // namespace
+
+CLI::App* add_generate_command(CLI::App& app, GenerateArgs& args) {
+    auto* cmd = app.add_subcommand(
+        "generate",
+        "Write a variant's validation kernel (GLSL and/or SPIR-V; GLSL on stdout when no file "
+        "is given), or with --library the includable shading library of CONTRACT.md 5");
+    auto* variant = cmd->add_option("--variant", args.variants,
+                                     "variant name (repeatable with --library: one per light "
+                                     "type and distribution)");
+    cmd->add_option("--scene", args.scene,
+                    "with --library: the variants an arealight-scene/1 file needs (CONTRACT.md "
+                    "7), each the cheapest that meets its quality by the measured data built in")
+        ->excludes(variant);
+    cmd->add_option("--glsl", args.glsl, "kernel GLSL file to write (one variant)");
+    cmd->add_option("--spv", args.spv, "kernel SPIR-V file to write (one variant)");
+    cmd->add_option("--library", args.library,
+                    "write the shading library (GLSL to #include, CONTRACT.md 5) here");
+    cmd->add_option("--tables", args.tables,
+                    "with --library: write the tables its samplers read, and tables.json, "
+                    "into this folder");
+    cmd->add_flag("--no-opt", args.no_opt, "skip the SPIRV-Tools performance passes");
+    return cmd;
+}
+
+int run_generate(const GenerateArgs& args, const DiagnosticConsumer& diag) {
+    auto usage = [&](const std::string& message) {
+        if (diag) diag({Severity::Error, "", 0, "generate: " + message});
+        return kUsage;
+    };
+    if (!args.scene.empty() && args.library.empty()) return usage("--scene needs --library");
+    if (args.scene.empty() && args.variants.empty()) return usage("--variant or --scene is required");
+    if (args.library.empty() && args.variants.size() != 1)
+        return usage("one --variant, or --library for several");
+    if (!args.library.empty() && (!args.glsl.empty() || !args.spv.empty()))
+        return usage("--library writes a library; --glsl and --spv a single variant's kernel");
+    if (args.library.empty() && !args.tables.empty()) return usage("--tables needs --library");
+    std::vector<Variant> variants;
+    if (!args.scene.empty()) {
+        const auto scene = read_scene(args.scene, diag);
+        if (!scene) return kBadInput;
+        const auto selected = select_variants(*scene, shipped_quality(), diag);
+        if (!selected) return kBadInput;
+        for (const auto& s : *selected) {
+            if (diag)
+                diag({Severity::Note, "", 0,
+                      fmt::format("{}: {}", canonical_name(s.variant), s.why)});
+            variants.push_back(s.variant);
+        }
+    }
+    for (const auto& name : args.variants) {
+        auto v = parse_variant(name, diag);
+        if (!v) return kBadInput;
+        variants.push_back(*v);
+    }
+    if (!args.library.empty()) return write_library(variants, args, diag);
+
+    const Variant& v = variants.front();
+    const std::string glsl = generate_source(v, Language::Glsl);
+    // Compile even when only GLSL is asked for: a written shader is a valid shader.
+    auto spirv = build_spirv(v, !args.no_opt, diag, KernelOutputs::All);
+    if (!spirv) return kRuntime;
+    if (args.glsl.empty() && args.spv.empty()) fmt::print("{}", glsl);
+    if (!args.glsl.empty() && !write_file_atomic(args.glsl, glsl, diag)) return kRuntime;
+    if (!args.spv.empty()) {
+        const std::string bytes(reinterpret_cast<const char*>(spirv->data()),
+                                spirv->size() * sizeof(uint32_t));
+        if (!write_file_atomic(args.spv, bytes, diag)) return kRuntime;
+    }
+    return kOk;
+}
+
+}  // namespace arealight::cli

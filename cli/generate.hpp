@@ -1,0 +1,28 @@
+// `arealight generate`: a variant's validation kernel (GLSL and/or SPIR-V), or the
+// shading library of CONTRACT.md 5 for one or more variants (--library), with the
+// tables it samples (--tables). Hooked into cli/main.cpp with add_generate_command
+// before parsing and run_generate when the subcommand was parsed.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+#include "arealight/diagnostics.hpp"
+
+namespace arealight::cli {
+
+struct GenerateArgs {
+    std::vector<std::string> variants;
+    std::string scene;  // instead of variants: the scene's selection
+    std::string glsl, spv, library, tables;
+    bool no_opt = false;
+};
+
+CLI::App* add_generate_command(CLI::App& app, GenerateArgs& args);
+
+// Exit codes as cli/main.cpp: 0 ok, 1 bad input (unknown variant, two variants of one
+// light and distribution), 2 usage, 3 compile or write failure.
+int run_generate(const GenerateArgs& args, const DiagnosticConsumer& diag);
+
+}  // namespace arealight::cli

@@ -1,0 +1,33 @@
+#include "generate_scene.hpp"
+
+#include <cstdio>
+
+#include "arealight/scene_select.hpp"
+#include "print_diagnostic.hpp"
+
+namespace arealight::cli {
+
+CLI::App* add_scene_variants_command(CLI::App& app, SceneVariantsArgs& args) {
+    auto* cmd = app.add_subcommand(
+        "scene-variants",
+        "List the variants a scene (arealight-scene/1) needs: one per light type and "
+        "distribution, the cheapest meeting its quality by the measured data built in "
+        "(data/quality/measured.json), specialised to its sidedness and largest polygon");
+    cmd->add_option("--scene", args.scene, "scene file")->required();
+    return cmd;
+}
+
+int run_scene_variants(const SceneVariantsArgs& args) {
+    const auto scene = read_scene(args.scene, print_scene_diagnostic);
+    if (!scene) return 1;
+    const auto selected = select_variants(*scene, shipped_quality(), print_scene_diagnostic);
+    if (!selected) return 1;
+    for (const auto& s : *selected) {
+        std::printf("%s\n", canonical_name(s.variant).c_str());
+        std::fprintf(stderr, "arealight: note: %s: %s\n", canonical_name(s.variant).c_str(),
+                     s.why.c_str());
+    }
+    return 0;
+}
+
+}  // namespace arealight::cli

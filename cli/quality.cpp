@@ -1,0 +1,45 @@
+#include "quality.hpp"
+
+#include "arealight/atomic_file.hpp"
+#include "arealight/quality.hpp"
+#include "arealight/variant.hpp"
+#include "print_diagnostic.hpp"
+
+namespace arealight::cli {
+
+CLI::App* add_quality_command(CLI::App& app, QualityArgs& args) {
+    auto* cmd = app.add_subcommand(
+        "quality",
+        "Collect the measured error and cost of every variant in report JSON files into the "
+        "quality data scene selection ranks by (arealight-quality/1; a variant in several "
+        "reports takes the last one's row)");
+    cmd->add_option("--report", args.reports, "report.json of `arealight report` (repeatable)")
+        ->required()
+        ->check(CLI::ExistingFile);
+    cmd->add_option("--out", args.out, "quality file to write (data/quality/measured.json)")
+        ->required();
+    return cmd;
+}
+
+int run_quality(const QualityArgs& args) {
+    auto data = quality_from_reports(args.reports, print_scene_diagnostic);
+    if (!data) return 3;
+    // A report older than a change to the variant keys may name what no longer exists:
+    // selection could never choose it, so it does not ship.
+    std::vector<MeasuredVariant> kept;
+    for (auto& m : data->variants) {
+        if (parse_variant(m.variant, {}))
+            kept.push_back(std::move(m));
+        else
+            print_scene_diagnostic(
+                {Severity::Warning, m.report, 0,
+                 m.report + ": '" + m.variant + "' is not a variant of this arealight; left out"});
+    }
+    data->variants = std::move(kept);
+    if (!write_file_atomic(args.out, format_quality(*data), print_scene_diagnostic)) return 3;
+    std::fprintf(stderr, "quality: %zu variants from %zu reports; wrote %s\n",
+                 data->variants.size(), data->reports.size(), args.out.c_str());
+    return 0;
+}
+
+}  // namespace arealight::cli

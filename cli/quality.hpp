@@ -1,0 +1,22 @@
+// `arealight quality`: the measured data scene selection ranks by (data/quality/
+// measured.json, arealight-quality/1) from report JSON files. Hooked into cli/main.cpp
+// with add_quality_command before parsing and run_quality when it was parsed.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+namespace arealight::cli {
+
+struct QualityArgs {
+    std::vector<std::string> reports;
+    std::string out;
+};
+
+CLI::App* add_quality_command(CLI::App& app, QualityArgs& args);
+
+// 0 ok, 3 a report unreadable or the output not written (usage errors are CLI11's, 2).
+int run_quality(const QualityArgs& args);
+
+}  // namespace arealight::cli

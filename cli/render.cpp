@@ -1,0 +1,185 @@
+#include "render.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <set>
+#include <thread>
+
+#include "arealight/atomic_file.hpp"
+#include "arealight/error_image.hpp"
+#include "arealight/pfm_image.hpp"
+#include "arealight/png_image.hpp"
+#include "arealight/render.hpp"
+#include "arealight/tone_map.hpp"
+#include "progress.hpp"
+
+namespace arealight::cli {
+
+namespace {
+
+enum Exit { kOk = 0, kBadInput = 1, kRuntime = 3 };
+
+void print_diagnostic(const Diagnostic& d) {
+    if (d.severity == Severity::Error)
+        fmt::print(stderr, "arealight: error: {}\n", d.message);
+    else
+        fmt::print(stderr, "arealight: {}: {}\n", to_string(d.severity), d.message);
+}
+
+// IMAGE.png -> IMAGE_diff.png (any other name: NAME_diff.png).
+std::string default_diff_path(const std::string& out) {
+    const std::string ext = ".png";
+    const bool png = out.size() > ext.size() && out.compare(out.size() - ext.size(), ext.size(), ext) == 0;
+    return (png ? out.substr(0, out.size() - ext.size()) : out) + "_diff.png";
+}
+
+}  // namespace
+
+CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
+    auto* cmd = app.add_subcommand(
+        "render",
+        "Render a scene (arealight-scene/1 plus camera and objects, see examples/scene.json) "
+        "through the shading library: one camera ray per pixel, then every visible point and "
+        "light a case, each variant's cases in one batch. Pixel = sum over lights of "
+        "intensity * (albedo * diffuse + specular); no shadows. The PNG is exposure * radiance "
+        "clamped to [0, 1], sRGB-encoded. With --compare, prints the image's error against a "
+        "linear reference (luminance: relL2, and median / p95 / max of "
+        "|Y - Y_ref| / max(Y_ref, floor)) and writes that per-pixel error in false colour "
+        "(viridis, log scale 1e-4 .. 1, colour bar with decade labels below the picture)");
+    cmd->add_option("--scene", a.scene, "scene file")->required();
+    cmd->add_option("--out", a.out, "PNG file to write")->required();
+    auto* variant = cmd->add_option(
+        "--variant", a.variants,
+        "variant for the lights and materials of its dist and light (repeatable, one per "
+        "pair); default: the scene's quality.method, else method=ltc for ggx and "
+        "method=pearson for phong, blinn, beckmann");
+    cmd->add_flag("--reference", a.reference,
+                  "shade with the oracle (arealight reference) instead of a variant")
+        ->excludes(variant);
+    cmd->add_option("--size", a.size, "image width and height in pixels")
+        ->expected(2)
+        ->check(CLI::Range(1, 8192))
+        ->capture_default_str();
+    cmd->add_option("--backend", a.backend, "cpu (the CPU mirror) or vulkan (the SPIR-V)")
+        ->check(CLI::IsMember({"cpu", "vulkan"}))
+        ->capture_default_str();
+    cmd->add_option("--device", a.device, "Vulkan device name substring (default: first)");
+    cmd->add_option("--exposure", a.exposure, "radiance multiplier before the sRGB encoding")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    cmd->add_option("--linear", a.linear,
+                    "also write the linear radiance: a colour PFM (little-endian float RGB, "
+                    "rows bottom to top)");
+    cmd->add_option("--compare", a.compare,
+                    "linear reference (a PFM from --linear, e.g. of a --reference render) to "
+                    "measure the error against");
+    cmd->add_option("--diff", a.diff,
+                    "error image to write with --compare (default: OUT with _diff before .png)");
+    cmd->add_option("--floor", a.floor, "luminance floor of the relative error")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    cmd->add_option("--tolerance", a.tolerance, "--reference: the oracle's relative accuracy")
+        ->check(CLI::Range(1e-14, 1e-1))
+        ->capture_default_str();
+    cmd->add_option("--threads", a.threads, "--reference: worker threads (0: every core)")
+        ->check(CLI::Range(0u, 256u))
+        ->capture_default_str();
+    return cmd;
+}
+
+int run_render(const RenderArgs& a) {
+    const auto start = std::chrono::steady_clock::now();
+    auto scene = read_render_scene(a.scene, print_diagnostic);
+    if (!scene) return kBadInput;
+    RenderOptions opt;
+    opt.width = a.size[0];
+    opt.height = a.size[1];
+    std::set<std::pair<LightType, Distribution>> given;
+    for (const auto& name : a.variants) {
+        auto v = parse_variant(name, print_diagnostic);
+        if (!v) return kBadInput;
+        if (!given.insert({v->light, v->dist}).second) {
+            print_diagnostic({Severity::Error, "", 0,
+                              fmt::format("--variant {}: a variant for dist={},light={} was "
+                                          "already given",
+                                          name, to_string(v->dist), to_string(v->light))});
+            return kBadInput;
+        }
+        opt.variants.push_back(*v);
+    }
+    std::optional<LinearImage> ref;
+    if (!a.compare.empty()) {
+        ref = read_pfm(a.compare, print_diagnostic);
+        if (!ref) return kBadInput;
+        // Before the rendering, which may take minutes.
+        if (ref->width != a.size[0] || ref->height != a.size[1]) {
+            print_diagnostic({Severity::Error, a.compare, 0,
+                              fmt::format("{}: is {}x{}, the rendering (--size) {}x{}", a.compare,
+                                          ref->width, ref->height, a.size[0], a.size[1])});
+            return kBadInput;
+        }
+    }
+    opt.reference = a.reference;
+    opt.reference_options.rel_tol = a.tolerance;
+    opt.reference_options.threads =
+        a.threads ? a.threads : std::max(1u, std::thread::hardware_concurrency());
+
+    std::unique_ptr<Evaluator> evaluator;
+    if (!a.reference) {
+        EvalOptions eo;
+        eo.backend = a.backend == "cpu" ? Backend::Cpu : Backend::Vulkan;
+        eo.device = a.device;
+        evaluator = Evaluator::create(eo, print_diagnostic);
+        if (!evaluator) return kRuntime;
+    }
+    ProgressPrinter progress("render reference", "cases");
+    RenderStats stats;
+    auto image = render(*scene, opt, evaluator.get(), print_diagnostic,
+                        [&](std::size_t d, std::size_t t) { progress(d, t); }, &stats);
+    if (!image) return kRuntime;
+
+    std::optional<ImageError> err;
+    ErrorScale scale;
+    scale.floor = a.floor;
+    if (ref) {
+        err = compare_images(*image, *ref, scale, print_diagnostic);
+        if (!err) return kBadInput;
+    }
+    // Every output is encoded before the first is written, so that a failure to encode
+    // leaves none of them behind.
+    const std::string diff = a.diff.empty() ? default_diff_path(a.out) : a.diff;
+    std::vector<std::pair<std::string, std::string>> files;
+    auto png = encode_png(tone_map(*image, a.exposure), a.out, print_diagnostic);
+    if (!png) return kRuntime;
+    files.emplace_back(a.out, std::move(*png));
+    if (!a.linear.empty()) files.emplace_back(a.linear, format_pfm(*image));
+    if (ref) {
+        auto diff_png = encode_png(error_image(*image, *ref, scale), diff, print_diagnostic);
+        if (!diff_png) return kRuntime;
+        files.emplace_back(diff, std::move(*diff_png));
+    }
+    for (const auto& [path, bytes] : files)
+        if (!write_file_atomic(path, bytes, print_diagnostic)) return kRuntime;
+
+    const double total =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    fmt::print("render: {} {}x{} on {}: {} cases, shading {:.2f} s, total {:.2f} s\n", a.scene,
+               opt.width, opt.height, a.reference ? "the oracle" : evaluator->device_name(),
+               stats.cases, stats.shading_seconds, total);
+    std::string names;
+    for (const auto& v : stats.variants) names += (names.empty() ? "" : "; ") + v;
+    fmt::print("variants: {}\n", names);
+    if (stats.unconverged)
+        fmt::print("oracle: {} cases stopped by the evaluation budget before --tolerance\n",
+                   stats.unconverged);
+    if (err)
+        fmt::print("error: relL2 {:.3e}, median {:.3e}, p95 {:.3e}, max {:.3e} against {} "
+                   "(luminance, floor {:g}); wrote {}\n",
+                   err->rel_l2, err->median, err->p95, err->max, a.compare, a.floor, diff);
+    if (err && err->bad)
+        fmt::print("error: {} pixels are not finite (magenta in {})\n", err->bad, a.out);
+    return kOk;
+}
+
+}  // namespace arealight::cli

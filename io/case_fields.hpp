@@ -1,0 +1,54 @@
+// The case reader's file handling and field validation (io/case_io.cpp), shared with the
+// scene reader (io/scene.cpp) so that a scene's lights and materials are checked exactly as
+// a case's are (CONTRACT 7: "Lights and materials use the fields of section 3").
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "arealight/case.hpp"
+#include "arealight/case_io.hpp"
+#include "arealight/diagnostics.hpp"
+
+namespace arealight::io_detail {
+
+// "FILE: MESSAGE" as an error.
+void report(const DiagnosticConsumer& diag, const std::string& file, const std::string& message);
+
+// The whole file, or nullopt after "FILE: cannot read: REASON".
+std::optional<std::string> read_text(const std::string& path, const DiagnosticConsumer& diag);
+
+// The parsed document, or nullopt after "FILE: invalid JSON: ...".
+std::optional<nlohmann::json> parse_json(const std::string& text, const std::string& file,
+                                         const DiagnosticConsumer& diag);
+
+// Collects "FILE: WHERE: field 'FIELD': reason" messages for one file.
+class Reporter {
+  public:
+    Reporter(std::string file, const DiagnosticConsumer& diag)
+        : file_(std::move(file)), diag_(diag) {}
+    void error(const std::string& where, const std::string& field, const std::string& reason);
+    int errors() const { return errors_; }
+
+  private:
+    std::string file_;
+    const DiagnosticConsumer& diag_;
+    int errors_ = 0;
+};
+
+// Whether the document is an object whose "format" is `format`; else reports why
+// ("FILE: field 'format': ...") and returns false.
+bool check_format(const nlohmann::json& doc, const std::string& format, Reporter& rep);
+
+// Reads one light object (a case's "light" value) into `out`, every error reported under
+// `where` with its field named `prefix` + the light's own field ("light." in a case file,
+// "" in a scene, whose lights are listed on their own).
+void read_light_object(Reporter& rep, const std::string& where, const std::string& prefix,
+                       const nlohmann::json& light, const ValidationTolerances& tol, Light& out);
+
+// The same for a material object (a case's "material" value).
+void read_material_object(Reporter& rep, const std::string& where, const std::string& prefix,
+                          const nlohmann::json& material, Material& out);
+
+}  // namespace arealight::io_detail

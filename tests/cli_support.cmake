@@ -1,0 +1,10 @@
+# Shared by the command-line test scripts: runs a command, fails unless it exits with
+# `code`, and leaves its stderr and stdout in LAST_ERR and LAST_OUT.
+function(expect_exit code)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL code)
+    message(FATAL_ERROR "expected exit ${code}, got ${rc} from: ${ARGN}\nstdout: ${out}\nstderr: ${err}")
+  endif()
+  set(LAST_ERR "${err}" PARENT_SCOPE)
+  set(LAST_OUT "${out}" PARENT_SCOPE)
+endfunction()
