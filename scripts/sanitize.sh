@@ -23,8 +23,7 @@ cd build-asan
 # Not under the sanitizers by default: the two all-variant lavapipe tests. They spend their
 # time in glslang, SPIRV-Tools and lavapipe, which are not instrumented, and took 561 and 602 s
 # here under ASan, with the machine loaded 5-9 on 2 cores (107 and 114 s in a plain CI run);
-# the code of ours they run (stitcher,
-# compiler, runner) is run under ASan by the other lavapipe tests.
+# the code of ours they run (stitcher, compiler, runner) runs under ASan in the other tests.
 # shellcheck disable=SC2086  # the arguments are meant to split
 ctest --output-on-failure -j"$(nproc)" \
   ${SANITIZE_CTEST_ARGS:--E "^every listed variant compiles, validates and runs on lavapipe"}
