@@ -72,6 +72,14 @@ void Reporter::error(const std::string& where, const std::string& field,
     report(diag_, file_, msg);
 }
 
+// A value as a message shows it: scalars as JSON, containers by kind only, because dump()
+// recurses once per level and a deeply nested value (a 200 kB file) overflows the stack.
+std::string describe(const json& v) {
+    if (v.is_array()) return "an array";
+    if (v.is_object()) return "an object";
+    return v.dump();
+}
+
 bool check_format(const json& doc, const std::string& format, Reporter& rep) {
     if (!doc.is_object()) {
         rep.error("", "format", "the file must be a JSON object");
@@ -83,7 +91,7 @@ bool check_format(const json& doc, const std::string& format, Reporter& rep) {
         return false;
     }
     if (!f->is_string() || f->get<std::string>() != format) {
-        rep.error("", "format", "is " + f->dump() + ", expected \"" + format + "\"");
+        rep.error("", "format", "is " + describe(*f) + ", expected \"" + format + "\"");
         return false;
     }
     return true;
@@ -528,10 +536,15 @@ bool write_results(const std::string& path, const ResultSet& results,
 std::optional<ResultSet> read_results(const std::string& path, const DiagnosticConsumer& diag) {
     auto text = read_text(path, diag);
     if (!text) return std::nullopt;
-    auto parsed = parse_json(*text, path, diag);
+    return parse_results(*text, path, diag);
+}
+
+std::optional<ResultSet> parse_results(const std::string& text, const std::string& name,
+                                       const DiagnosticConsumer& diag) {
+    auto parsed = parse_json(text, name, diag);
     if (!parsed) return std::nullopt;
     const json& doc = *parsed;
-    Reporter rep(path, diag);
+    Reporter rep(name, diag);
     if (!io_detail::check_format(doc, "arealight-results/1", rep)) return std::nullopt;
     auto rs = doc.find("results");
     if (rs == doc.end() || !rs->is_array()) {

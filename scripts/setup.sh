@@ -9,6 +9,7 @@ PACKAGES=(
   libvulkan-dev mesa-vulkan-drivers vulkan-tools
   libglm-dev libfmt-dev libcli11-dev nlohmann-json3-dev catch2
   libboost-dev libzstd-dev libcapstone-dev pkg-config libnlopt-cxx-dev libpng-dev
+  clang libclang-rt-14-dev
 )
 
 missing=()

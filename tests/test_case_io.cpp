@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "arealight/case_io.hpp"
+#include "arealight/scene.hpp"
 
 using namespace arealight;
 using Catch::Matchers::Contains;
@@ -243,6 +244,24 @@ TEST_CASE("malformed: wrong or missing format, cases not an array", "[io]") {
     expect_file_error(R"([1, 2])", "field 'format': ", "JSON object");
     expect_file_error(R"({"format": "arealight-cases/1", "cases": 3})", "field 'cases': ", "array");
     expect_file_error(R"({"format": "arealight-cases/1"})", "field 'cases': ", "missing");
+}
+
+// Found while fuzzing the readers (by hand: the fuzzer's 4 kB inputs nest too little): the
+// message printed the value with dump(), which recurses per level and overflowed the stack
+// (a segfault) at 100000 levels, a 200 kB file.
+TEST_CASE("malformed: a deeply nested format value is named, not printed", "[io]") {
+    constexpr int kDepth = 200000;
+    const std::string nested = std::string(kDepth, '[') + std::string(kDepth, ']');
+    std::vector<std::string> msgs;
+    auto collect = [&](const Diagnostic& d) { msgs.push_back(d.message); };
+    CHECK_FALSE(parse_cases(R"({"format": )" + nested + R"(, "cases": []})", "deep.json", collect));
+    CHECK_FALSE(parse_results(R"({"format": )" + nested + R"(, "results": []})", "deep.json",
+                              collect));
+    CHECK_FALSE(parse_scene(R"({"format": )" + nested + "}", "deep.json", collect));
+    REQUIRE(msgs.size() == 3);
+    CHECK(msgs[0] == "deep.json: field 'format': is an array, expected \"arealight-cases/1\"");
+    CHECK(msgs[1] == "deep.json: field 'format': is an array, expected \"arealight-results/1\"");
+    CHECK(msgs[2] == "deep.json: field 'format': is an array, expected \"arealight-scene/1\"");
 }
 
 TEST_CASE("malformed: unreadable file", "[io]") {

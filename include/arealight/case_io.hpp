@@ -35,5 +35,8 @@ bool write_results(const std::string& path, const ResultSet& results,
                    const DiagnosticConsumer& diag);
 // Reads a results file (for tests and reports).
 std::optional<ResultSet> read_results(const std::string& path, const DiagnosticConsumer& diag);
+// Same, from text already in memory; `name` stands for the file in messages.
+std::optional<ResultSet> parse_results(const std::string& text, const std::string& name,
+                                       const DiagnosticConsumer& diag);
 
 }  // namespace arealight
