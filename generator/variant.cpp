@@ -759,8 +759,10 @@ bool variant_matches(const Variant& v, const std::string& pattern) {
     for (const auto& [key, value] : *pairs) {
         const auto k = key_index(key);
         if (!k) return false;
+        // As parse_variant reads it: "nodes=08" is nodes=8.
+        const auto spelled = accept(tables().keys[*k], value);
         const auto actual = effective_value(v, *k);
-        if (!actual || *actual != value) return false;  // or a key it has no value for
+        if (!spelled || !actual || *actual != *spelled) return false;  // or a key it has no value for
     }
     return true;
 }

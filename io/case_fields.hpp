@@ -41,6 +41,10 @@ class Reporter {
 // ("FILE: field 'format': ...") and returns false.
 bool check_format(const nlohmann::json& doc, const std::string& format, Reporter& rep);
 
+// A value as a message shows it: scalars as JSON, containers by kind only (dump()
+// recurses once per level of nesting and would overflow the stack on a deep one).
+std::string describe(const nlohmann::json& v);
+
 // Reads one light object (a case's "light" value) into `out`, every error reported under
 // `where` with its field named `prefix` + the light's own field ("light." in a case file,
 // "" in a scene, whose lights are listed on their own).

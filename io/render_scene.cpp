@@ -136,7 +136,7 @@ class SceneReader {
         } else if (!m->is_number_integer() || m->get<long long>() < 0 ||
                    m->get<long long>() >= static_cast<long long>(materials)) {
             fail(where, "material",
-                 fmt::format("{} is not an index into materials (0 to {})", m->dump(),
+                 fmt::format("{} is not an index into materials (0 to {})", io_detail::describe(*m),
                              static_cast<long long>(materials) - 1));
         } else {
             out.material = m->get<int>();

@@ -590,3 +590,14 @@ TEST_CASE("where a key applies, as its message says, is the families that name i
         }
     }
 }
+
+TEST_CASE("a pattern matches a number as parse_variant reads it", "[variant]") {
+    // fuzz/crashes/fuzz_variant/matches-own-name-nodes-02.txt: "nodes=02" parses as nodes=2.
+    const auto v = parse_variant("dist=phong,method=exact,light=polygon,nodes=08", {});
+    REQUIRE(v);
+    CHECK(v->nodes == 8);
+    CHECK(variant_matches(*v, "method=exact,nodes=08"));
+    CHECK(variant_matches(*v, "nodes=8"));
+    CHECK_FALSE(variant_matches(*v, "nodes=016"));
+    CHECK_FALSE(variant_matches(*v, "nodes=x"));
+}
