@@ -21,14 +21,24 @@ LibraryOptions measured_comments(const std::vector<Variant>& variants) {
     for (const auto& v : variants) {
         const std::string name = canonical_name(v);
         const MeasuredVariant* m = shipped_quality().find(name);
+        // A variant specialised to sidedness or polygon size computes the same values as
+        // its general form on the lights it accepts: quote that one's measurement.
+        Variant general = v;
+        general.sided = Variant{}.sided;
+        general.verts = Variant{}.verts;
+        std::string as;
+        if (!m && is_valid(general)) {
+            m = shipped_quality().find(canonical_name(general));
+            as = fmt::format(" for {}", canonical_name(general));
+        }
         if (!m) continue;
         std::string errors;
         for (const auto& [quantity, value] : m->rel_l2)
             errors += fmt::format("{}{} {:.2g}", errors.empty() ? "" : ", ", quantity, value);
         opt.measured[name] = fmt::format(
-            "Measured ({}, {} cases, relL2): {}. Cost on lavapipe: {} x86-64 instructions, "
+            "Measured{} ({}, {} cases, relL2): {}. Cost on lavapipe: {} x86-64 instructions, "
             "{:.2g}x the point light's time.",
-            m->report, m->cases, errors, m->x86_instructions, m->ratio_to_point);
+            as, m->report, m->cases, errors, m->x86_instructions, m->ratio_to_point);
     }
     return opt;
 }
