@@ -17,7 +17,7 @@ enum Exit { kOk = 0, kBadInput = 1, kUsage = 2, kRuntime = 3 };
 
 // Compiler diagnostics carry their position apart from the message: print it gcc-style, so
 // that an error in an included file reads `lib.glsl:12: ...`.
-void print_diagnostic(const Diagnostic& d) {
+void print_compiler_diagnostic(const Diagnostic& d) {
     std::string where;
     if (d.line > 0) {
         where = fmt::format("{}:{}: ", d.file, d.line);
@@ -67,7 +67,7 @@ int run_compile(const CompileArgs& args) {
     const auto stage = args.stage.empty() ? stage_from_path(args.shader)
                                           : stage_from_path("." + args.stage);
     if (!stage) {
-        print_diagnostic({Severity::Error, args.shader, 0,
+        print_compiler_diagnostic({Severity::Error, args.shader, 0,
                           "no shader stage for this extension: name it .vert, .tesc, .tese, "
                           ".geom, .frag or .comp, or give --stage"});
         return kUsage;
@@ -76,14 +76,14 @@ int run_compile(const CompileArgs& args) {
 
     std::ifstream in(args.shader, std::ios::binary);
     if (!in) {
-        print_diagnostic({Severity::Error, args.shader, 0, "cannot read"});
+        print_compiler_diagnostic({Severity::Error, args.shader, 0, "cannot read"});
         return kBadInput;
     }
     const std::string source((std::istreambuf_iterator<char>(in)),
                              std::istreambuf_iterator<char>());
 
     std::vector<std::string> included;
-    const auto spirv = compile_glsl(source, args.shader, options, print_diagnostic, &included);
+    const auto spirv = compile_glsl(source, args.shader, options, print_compiler_diagnostic, &included);
     if (!spirv) return kBadInput;
 
     const std::string bytes(reinterpret_cast<const char*>(spirv->data()),
@@ -92,9 +92,9 @@ int run_compile(const CompileArgs& args) {
         std::string rule = make_escaped(args.out) + ": " + make_escaped(args.shader);
         for (const auto& file : included) rule += " \\\n  " + make_escaped(file);
         rule += "\n";
-        if (!write_file_atomic(args.depfile, rule, print_diagnostic)) return kRuntime;
+        if (!write_file_atomic(args.depfile, rule, print_compiler_diagnostic)) return kRuntime;
     }
-    if (!write_file_atomic(args.out, bytes, print_diagnostic)) return kRuntime;
+    if (!write_file_atomic(args.out, bytes, print_compiler_diagnostic)) return kRuntime;
     return kOk;
 }
 

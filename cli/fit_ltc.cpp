@@ -7,18 +7,11 @@
 
 #include "arealight/atomic_file.hpp"
 #include "arealight/ltc_table.hpp"
+#include "print_diagnostic.hpp"
 
 namespace arealight::cli {
 
 namespace {
-
-void print_diagnostic(const Diagnostic& d) {
-    if (d.severity == Severity::Error) {
-        std::fprintf(stderr, "arealight: error: %s\n", d.message.c_str());
-    } else {
-        std::fprintf(stderr, "arealight: %s: %s\n", to_string(d.severity), d.message.c_str());
-    }
-}
 
 Distribution distribution_of(const std::string& s) {
     for (Distribution d : {Distribution::Phong, Distribution::Blinn, Distribution::Beckmann,

@@ -18,9 +18,9 @@ CLI::App* add_scene_variants_command(CLI::App& app, SceneVariantsArgs& args) {
 }
 
 int run_scene_variants(const SceneVariantsArgs& args) {
-    const auto scene = read_scene(args.scene, print_scene_diagnostic);
+    const auto scene = read_scene(args.scene, print_diagnostic);
     if (!scene) return 1;
-    const auto selected = select_variants(*scene, shipped_quality(), print_scene_diagnostic);
+    const auto selected = select_variants(*scene, shipped_quality(), print_diagnostic);
     if (!selected) return 1;
     for (const auto& s : *selected) {
         std::printf("%s\n", canonical_name(s.variant).c_str());

@@ -31,6 +31,7 @@
 #include "compile.hpp"
 #include "fit_ltc.hpp"
 #include "generate.hpp"
+#include "print_diagnostic.hpp"
 #include "generate_scene.hpp"
 #include "quality.hpp"
 #include "progress.hpp"
@@ -43,14 +44,7 @@ using arealight::cli::ProgressPrinter;
 
 enum Exit { kOk = 0, kBadInput = 1, kUsage = 2, kRuntime = 3 };
 
-void print_diagnostic(const arealight::Diagnostic& d) {
-    // Messages already name their file; print them verbatim, notes included.
-    if (d.severity == arealight::Severity::Error) {
-        fmt::print(stderr, "arealight: error: {}\n", d.message);
-    } else {
-        fmt::print(stderr, "arealight: {}: {}\n", arealight::to_string(d.severity), d.message);
-    }
-}
+using arealight::cli::print_diagnostic;
 
 int run_reference(const std::string& cases_path, const std::string& out_path, double rel_tol,
                   unsigned threads, bool table) {

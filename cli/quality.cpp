@@ -22,7 +22,7 @@ CLI::App* add_quality_command(CLI::App& app, QualityArgs& args) {
 }
 
 int run_quality(const QualityArgs& args) {
-    auto data = quality_from_reports(args.reports, print_scene_diagnostic);
+    auto data = quality_from_reports(args.reports, print_diagnostic);
     if (!data) return 3;
     // A report older than a change to the variant keys may name what no longer exists:
     // selection could never choose it, so it does not ship.
@@ -31,12 +31,12 @@ int run_quality(const QualityArgs& args) {
         if (parse_variant(m.variant, {}))
             kept.push_back(std::move(m));
         else
-            print_scene_diagnostic(
+            print_diagnostic(
                 {Severity::Warning, m.report, 0,
                  m.report + ": '" + m.variant + "' is not a variant of this arealight; left out"});
     }
     data->variants = std::move(kept);
-    if (!write_file_atomic(args.out, format_quality(*data), print_scene_diagnostic)) return 3;
+    if (!write_file_atomic(args.out, format_quality(*data), print_diagnostic)) return 3;
     std::fprintf(stderr, "quality: %zu variants from %zu reports; wrote %s\n",
                  data->variants.size(), data->reports.size(), args.out.c_str());
     return 0;

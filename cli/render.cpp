@@ -84,17 +84,17 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
 
 int run_render(const RenderArgs& a) {
     const auto start = std::chrono::steady_clock::now();
-    auto scene = read_render_scene(a.scene, print_scene_diagnostic);
+    auto scene = read_render_scene(a.scene, print_diagnostic);
     if (!scene) return kBadInput;
     RenderOptions opt;
     opt.width = a.size[0];
     opt.height = a.size[1];
     std::set<std::pair<LightType, Distribution>> given;
     for (const auto& name : a.variants) {
-        auto v = parse_variant(name, print_scene_diagnostic);
+        auto v = parse_variant(name, print_diagnostic);
         if (!v) return kBadInput;
         if (!given.insert({v->light, v->dist}).second) {
-            print_scene_diagnostic({Severity::Error, "", 0,
+            print_diagnostic({Severity::Error, "", 0,
                               fmt::format("--variant {}: a variant for dist={},light={} was "
                                           "already given",
                                           name, to_string(v->dist), to_string(v->light))});
@@ -109,18 +109,18 @@ int run_render(const RenderArgs& a) {
         for (const auto& m : scene->materials) {
             if (a.reference || !given.insert({l.type, m.distribution}).second) continue;
             auto s = render_variant(*scene, l.type, m.distribution, shipped_quality(),
-                                    print_scene_diagnostic);
+                                    print_diagnostic);
             if (!s) return kBadInput;
             opt.variants.push_back(s->variant);
         }
     }
     std::optional<LinearImage> ref;
     if (!a.compare.empty()) {
-        ref = read_pfm(a.compare, print_scene_diagnostic);
+        ref = read_pfm(a.compare, print_diagnostic);
         if (!ref) return kBadInput;
         // Before the rendering, which may take minutes.
         if (ref->width != a.size[0] || ref->height != a.size[1]) {
-            print_scene_diagnostic({Severity::Error, a.compare, 0,
+            print_diagnostic({Severity::Error, a.compare, 0,
                               fmt::format("{}: is {}x{}, the rendering (--size) {}x{}", a.compare,
                                           ref->width, ref->height, a.size[0], a.size[1])});
             return kBadInput;
@@ -136,12 +136,12 @@ int run_render(const RenderArgs& a) {
         EvalOptions eo;
         eo.backend = a.backend == "cpu" ? Backend::Cpu : Backend::Vulkan;
         eo.device = a.device;
-        evaluator = Evaluator::create(eo, print_scene_diagnostic);
+        evaluator = Evaluator::create(eo, print_diagnostic);
         if (!evaluator) return kRuntime;
     }
     ProgressPrinter progress("render reference", "cases");
     RenderStats stats;
-    auto image = render(*scene, opt, evaluator.get(), print_scene_diagnostic,
+    auto image = render(*scene, opt, evaluator.get(), print_diagnostic,
                         [&](std::size_t d, std::size_t t) { progress(d, t); }, &stats);
     if (!image) return kRuntime;
 
@@ -149,24 +149,24 @@ int run_render(const RenderArgs& a) {
     ErrorScale scale;
     scale.floor = a.floor;
     if (ref) {
-        err = compare_images(*image, *ref, scale, print_scene_diagnostic);
+        err = compare_images(*image, *ref, scale, print_diagnostic);
         if (!err) return kBadInput;
     }
     // Every output is encoded before the first is written, so that a failure to encode
     // leaves none of them behind.
     const std::string diff = a.diff.empty() ? default_diff_path(a.out) : a.diff;
     std::vector<std::pair<std::string, std::string>> files;
-    auto png = encode_png(tone_map(*image, a.exposure), a.out, print_scene_diagnostic);
+    auto png = encode_png(tone_map(*image, a.exposure), a.out, print_diagnostic);
     if (!png) return kRuntime;
     files.emplace_back(a.out, std::move(*png));
     if (!a.linear.empty()) files.emplace_back(a.linear, format_pfm(*image));
     if (ref) {
-        auto diff_png = encode_png(error_image(*image, *ref, scale), diff, print_scene_diagnostic);
+        auto diff_png = encode_png(error_image(*image, *ref, scale), diff, print_diagnostic);
         if (!diff_png) return kRuntime;
         files.emplace_back(diff, std::move(*diff_png));
     }
     for (const auto& [path, bytes] : files)
-        if (!write_file_atomic(path, bytes, print_scene_diagnostic)) return kRuntime;
+        if (!write_file_atomic(path, bytes, print_diagnostic)) return kRuntime;
 
     const double total =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

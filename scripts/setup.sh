@@ -8,7 +8,7 @@ PACKAGES=(
   glslang-dev glslang-tools spirv-tools spirv-headers
   libvulkan-dev mesa-vulkan-drivers vulkan-tools
   libglm-dev libfmt-dev libcli11-dev nlohmann-json3-dev catch2
-  libboost-dev libzstd-dev libcapstone-dev pkg-config libnlopt-cxx-dev libpng-dev
+  libboost-dev libzstd-dev libcapstone-dev libnlopt-cxx-dev libpng-dev ninja-build
   clang libclang-rt-14-dev
 )
 
