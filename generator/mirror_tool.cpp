@@ -104,7 +104,7 @@ int main(int argc, char** argv) {
             bind += fmt::format("    {0}.tex = texture_count > {1} ? textures[{1}] : nullptr;\n",
                                 arealight::library_rename(samplers[k], variants[i]), k);
         }
-        // The validation kernel's loop (templates/kernel_<light>.glsl) over the same packed
+        // The validation kernel's loop (templates/kernel.glsl) over the same packed
         // cases: the library function for diffuse and specular, and with `second` the
         // entry's other quantities from a second call.
         out += fmt::format(
@@ -125,12 +125,14 @@ int main(int argc, char** argv) {
             "        vec3 vertices[8];\n"
             "        for (int k = 0; k < 8; ++k)\n"
             "            vertices[k] = vec3(c[16 + 4 * k], c[17 + 4 * k], c[18 + 4 * k]);\n"
-            "        const int n = int(c[15]);\n"
+            "        vec3 axes[3] = {{vertices[1], vertices[2], vertices[3]}};\n"
+            "        const int count = int(c[15]);\n"
             "        const bool two_sided = c[14] != 0.0f;\n"
-            "        const ArealightShading o = {}(s, vertices, n, two_sided);\n"
+            "        (void)axes;\n        (void)count;\n        (void)two_sided;\n"
+            "        const ArealightShading o = {}(s, {});\n"
             "        vec4 r(o.diffuse, o.specular, 0.0f, 0.0f);\n"
             "        if (second) {{\n"
-            "            const vec4 q = {}(s, vertices, n, two_sided);\n"
+            "            const vec4 q = {}(s, {});\n"
             "            r.z = q.z;\n"
             "            r.w = q.w;\n"
             "        }}\n"
@@ -139,9 +141,11 @@ int main(int argc, char** argv) {
             "}}\n"
             "}}  // namespace al_mirror_{}\n",
             bind, arealight::kFloatsPerCase, arealight::library_function_name(variants[i]),
+            arealight::kernel_light_arguments(variants[i]),
             arealight::library_rename(
                 fmt::format("al_{}_evaluate", arealight::to_string(variants[i].light)),
                 variants[i]),
+            arealight::kernel_light_arguments(variants[i]),
             i);
         for (const auto& d : defined_names(src)) out += fmt::format("#undef {}\n", d);
         out += "\n";

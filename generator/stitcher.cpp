@@ -18,23 +18,35 @@ namespace {
 constexpr const char* kGeneratedName = "arealight-generated";
 
 // What the library offers per light type (CONTRACT.md 5): the public function's
-// light parameters, the template that turns them into the methods' record, and
-// the validation kernel that feeds them from a case. A new light type is a row.
+// light parameters, the templates that turn them into the methods' record, and how
+// the validation kernel and the CPU mirror pass a case's light (their locals
+// vertices[8], axes[3], count, two_sided; templates/kernel.glsl). A new light type
+// is a row.
 struct LightEntry {
     LightType light;
     const char* params;  // after `ArealightSurface s, `
-    const char* args;
-    const char* library_template;
-    const char* kernel_template;
+    const char* args;    // the parameters' names, in order
+    std::vector<std::string> library_templates;
+    const char* kernel_args;
     const char* domain;
 };
 
 const std::vector<LightEntry>& light_entries() {
     static const std::vector<LightEntry> rows = {
         {LightType::Polygon, "vec3 vertices[8], int count, bool two_sided",
-         "vertices, count, two_sided", "library_polygon.glsl", "kernel_polygon.glsl",
+         "vertices, count, two_sided", {"library_polygon.glsl"}, "vertices, count, two_sided",
          "convex planar polygon, counter-clockwise seen from its emitting side, count in [3, "
          "AL_MAX_VERTS] (more are cut to the first AL_MAX_VERTS)"},
+        {LightType::Disk, "vec3 center, vec3 u, vec3 v, bool two_sided", "center, u, v, two_sided",
+         {"ellipse_record.glsl", "spin_polygon.glsl", "library_disk.glsl"}, "vertices[0], vertices[1], vertices[2], two_sided",
+         "disk or ellipse with orthogonal semi-axes u, v, emitting towards u x v (both sides if "
+         "two_sided)"},
+        {LightType::Sphere, "vec3 center, float radius", "center, radius",
+         {"ellipse_record.glsl", "spin_polygon.glsl", "library_sphere.glsl"}, "vertices[0], vertices[1].x",
+         "sphere of radius > 0, p outside it"},
+        {LightType::Ellipsoid, "vec3 center, vec3 axes[3]", "center, axes",
+         {"ellipse_record.glsl", "spin_polygon.glsl", "library_ellipsoid.glsl"}, "vertices[0], axes",
+         "ellipsoid with orthogonal semi-axes, p outside it"},
     };
     return rows;
 }
@@ -122,6 +134,8 @@ void emit_defines(std::string& out, const Variant& v) {
     for (const auto& [name, value] : variant_defines(v)) {
         out += fmt::format("#define {} {}\n", name, value);
     }
+    // The curved lights share one record (templates/ellipse_record.glsl).
+    if (v.light != LightType::Polygon) out += "#define AL_LIGHT_CURVED 1\n";
 }
 
 // Whether the variant's family uses a key (its row in the family table).
@@ -198,7 +212,7 @@ std::vector<std::string> chunk_templates(const Variant& v) {
         for (const auto& name : family->templates) files.push_back("templates/" + name);
     }
     if (const LightEntry* light = find_light(v.light))
-        files.push_back(std::string("templates/") + light->library_template);
+        for (const auto& t : light->library_templates) files.push_back("templates/" + t);
     return files;
 }
 
@@ -319,6 +333,11 @@ std::string library_rename(const std::string& text, const Variant& v) {
     return out;
 }
 
+std::string kernel_light_arguments(const Variant& v) {
+    const LightEntry* light = find_light(v.light);
+    return light ? light->kernel_args : "";
+}
+
 std::string library_function_name(const Variant& v) {
     return fmt::format("arealight_{}_{}", to_string(v.light), to_string(v.dist));
 }
@@ -331,10 +350,7 @@ std::string sampler_binding_macro(const Variant& v, const std::string& sampler) 
 std::vector<std::string> variant_templates(const Variant& v, Language lang) {
     std::vector<std::string> files = {"templates/library_types.glsl"};
     for (auto& f : chunk_templates(v)) files.push_back(std::move(f));
-    if (lang == Language::Glsl) {
-        if (const LightEntry* light = find_light(v.light))
-            files.push_back(std::string("templates/") + light->kernel_template);
-    }
+    if (lang == Language::Glsl && find_light(v.light)) files.push_back("templates/kernel.glsl");
     return files;
 }
 
@@ -436,8 +452,9 @@ void emit_kernel_entry(std::string& out, const Variant& v, KernelOutputs outputs
     out += fmt::format("#define AL_KERNEL_SHADE {}\n", library_function_name(v));
     out += fmt::format("#define AL_KERNEL_EVALUATE {}\n",
                        library_rename(fmt::format("al_{}_evaluate", to_string(v.light)), v));
+    out += fmt::format("#define AL_KERNEL_ARGS {}\n", light->kernel_args);
     if (outputs == KernelOutputs::All) out += "#define AL_KERNEL_SECOND 1\n";
-    emit_template(out, std::string("templates/") + light->kernel_template, lookup, "f");
+    emit_template(out, "templates/kernel.glsl", lookup, "f");
 }
 
 }  // namespace

@@ -32,6 +32,7 @@ const Split kSplits[] = {Split::None, Split::Single, Split::Halved};
 const Factor kFactors[] = {Factor::Closest, Factor::Blend};
 const Horizon kHorizons[] = {Horizon::Clip, Horizon::Proxy};
 const Edge kEdges[] = {Edge::Acos, Edge::Poly};
+const Orient kOrients[] = {Orient::Rim, Orient::Paper};
 
 // How a key's effective value becomes a preprocessor switch.
 struct DefineRule {
@@ -196,6 +197,13 @@ std::vector<KeyRow> key_rows() {
         key("edge",               &Variant::edge,        kEdges,         one_hot("AL_EDGE_"),
             "method=ltc: edge integral theta / sin(theta) by acos, or poly (a polynomial "
             "in cos(theta), seed 001)"),
+        key("proxy",              &Variant::proxy,       {4, 8},         number("AL_MAX_VERTS"),
+            "curved lights through a polygon method: sides of the spinning proxy polygon "
+            "(seed 000 section 9)"),
+        key("orient",             &Variant::orient,      kOrients,       one_hot("AL_ORIENT_"),
+            "curved lights through a polygon method: the proxy's turn per shading point: rim "
+            "(area-matched, an edge crossing the rim under the mirror ray) or paper (seed 000 "
+            "Algorithm 3, typos corrected)"),
     };
     // clang-format on
 }
@@ -286,6 +294,54 @@ std::vector<VariantFamily> family_rows() {
             {"polygon.glsl", "method_ltc.glsl"}, {"al_ltc_matrix", "al_ltc_amplitude"}, false},
     };
     // clang-format on
+}
+
+// Curved lights (disk, sphere, ellipsoid; seed 000 section 9). Each light's library
+// entry reduces it to an ellipse (templates/ellipse_record.glsl); a polygon method
+// then shades the spinning proxy polygon of that ellipse, so its family is the
+// polygon family's row with the polygon keys (sided, verts) replaced by the proxy's
+// (proxy, orient) and every other key held at its default. Phong offers the
+// paper's form (proxy=4, orient=paper) beside ours; the microfacet methods only
+// the default, which is what their error is measured for. The point baseline has
+// its own template: the ellipse's centre and solid angle.
+std::vector<VariantFamily> curved_rows(const std::vector<VariantFamily>& polygon_rows,
+                                       const std::vector<KeyRow>& keys) {
+    using L = LightType;
+    auto default_of = [&](const FamilyKey& k) {
+        if (!k.default_value.empty()) return k.default_value;
+        for (const auto& row : keys)
+            if (row.name == k.key) return row.default_value;
+        return std::string();
+    };
+    std::vector<VariantFamily> out;
+    for (L light : {L::Disk, L::Sphere, L::Ellipsoid}) {
+        for (const auto& row : polygon_rows) {
+            if (!is_peak_method(row.method) && row.method != Method::Ltc &&
+                row.method != Method::Point)
+                continue;
+            VariantFamily f = row;
+            f.light = light;
+            f.keys.clear();
+            if (row.method == Method::Point) {
+                f.templates.clear();
+                for (const auto& t : row.templates)
+                    if (t != "polygon.glsl" && t != "light_polygon.glsl") f.templates.push_back(t);
+                f.templates.push_back("point_curved.glsl");
+                out.push_back(std::move(f));
+                continue;
+            }
+            const bool phong = row.dist == Distribution::Phong && row.method != Method::Ltc;
+            f.keys.push_back(phong ? FamilyKey("proxy") : FamilyKey("proxy", {"8"}));
+            f.keys.push_back(phong ? FamilyKey("orient") : FamilyKey("orient", {"rim"}));
+            for (const auto& k : row.keys) {
+                if (k.key == "sided" || k.key == "verts") continue;
+                const std::string d = default_of(k);
+                f.keys.emplace_back(k.key, std::vector<std::string>{d}, d);
+            }
+            out.push_back(std::move(f));
+        }
+    }
+    return out;
 }
 
 // Where a key applies, as the error messages name it: the row's declared `where`,
@@ -413,6 +469,7 @@ const Tables& tables() {
         Tables t;
         t.keys = key_rows();
         t.families = family_rows();
+        for (auto& f : curved_rows(t.families, t.keys)) t.families.push_back(std::move(f));
         for (auto& f : t.families) {
             for (auto& fk : f.keys) {
                 for (const auto& row : t.keys)
@@ -570,6 +627,9 @@ const char* to_string(Horizon h) {
 }
 const char* to_string(Edge e) {
     return e == Edge::Acos ? "acos" : "poly";
+}
+const char* to_string(Orient o) {
+    return o == Orient::Rim ? "rim" : "paper";
 }
 const char* to_string(Fit f) {
     return f == Fit::Tuned ? "tuned" : "paper";

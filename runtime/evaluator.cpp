@@ -53,9 +53,30 @@ std::vector<float> pack_cases(const std::vector<const Case*>& cases) {
         // Schlick f0 (CONTRACT.md 2); 1 when the case has none, which makes F = 1 exactly.
         o[13] = static_cast<float>(m.f0);
         o[14] = c.light.two_sided ? 1.0f : 0.0f;
-        o[15] = static_cast<float>(c.light.vertices.size());
-        for (std::size_t k = 0; k < c.light.vertices.size() && k < 8; ++k)
-            put(c.light.vertices[k], o + 16 + 4 * k);
+        // The light's slots (templates/kernel.glsl): a polygon's vertices, or a curved
+        // light's centre and then its vectors.
+        float* slots = o + 16;
+        const Light& l = c.light;
+        switch (l.type) {
+            case LightType::Polygon:
+                o[15] = static_cast<float>(l.vertices.size());
+                for (std::size_t k = 0; k < l.vertices.size() && k < 8; ++k)
+                    put(l.vertices[k], slots + 4 * k);
+                break;
+            case LightType::Disk:
+                put(l.center, slots);
+                put(l.u, slots + 4);
+                put(l.v, slots + 8);
+                break;
+            case LightType::Sphere:
+                put(l.center, slots);
+                slots[4] = static_cast<float>(l.radius);
+                break;
+            case LightType::Ellipsoid:
+                put(l.center, slots);
+                for (int k = 0; k < 3; ++k) put(l.axes[k], slots + 4 + 4 * k);
+                break;
+        }
     }
     return out;
 }

@@ -111,7 +111,7 @@ TEST_CASE("a variant stitches the library types, common, its family's templates,
                        "templates/dist_phong.glsl", "templates/phong_edge.glsl",
                        "templates/method_exact_phong.glsl", "templates/phong_boundary.glsl",
                        "templates/polygon.glsl", "templates/light_polygon.glsl",
-                       "templates/library_polygon.glsl", "templates/kernel_polygon.glsl"});
+                       "templates/library_polygon.glsl", "templates/kernel.glsl"});
     CHECK(variant_templates(parse("dist=phong,method=arvo,light=polygon,verts=3"), Language::Cpp) ==
           std::vector<std::string>{"templates/library_types.glsl", "templates/common.glsl",
                                    "templates/dist_phong.glsl", "templates/phong_edge.glsl",
@@ -130,7 +130,7 @@ TEST_CASE("a variant stitches the library types, common, its family's templates,
         want.push_back("templates/library_polygon.glsl");
         INFO(canonical_name(v));
         CHECK(variant_templates(v, Language::Cpp) == want);
-        want.push_back("templates/kernel_polygon.glsl");
+        want.push_back("templates/kernel.glsl");
         CHECK(variant_templates(v, Language::Glsl) == want);
         for (const auto& path : want) {
             INFO(path);

@@ -52,6 +52,11 @@ enum class Horizon { Clip, Proxy };
 // method=ltc: the edge integral's theta / sin(theta) by acos (exact) or by a
 // polynomial in cos(theta) (seed 001, fp16-friendly).
 enum class Edge { Acos, Poly };
+// Curved lights through a polygon method (seed 000 section 9, the spinning polygon):
+// how the proxy regular polygon is turned at each shading point. rim: area-matched,
+// one edge crossing the light's rim where the mirror ray meets the light's plane;
+// paper: Algorithm 3 with its typos corrected (templates/spin_polygon.glsl).
+enum class Orient { Rim, Paper };
 
 // One shader variant. Each key of the key table (variant_keys()) is a typed field
 // here, initialised to the key's default; which keys a variant uses, and which of
@@ -71,6 +76,8 @@ struct Variant {
     Factor factor = Factor::Blend;   // microfacet peak methods
     Horizon horizon = Horizon::Clip;  // method=ltc
     Edge edge = Edge::Acos;           // method=ltc
+    int proxy = 8;                    // curved lights, polygon methods: proxy polygon's size
+    Orient orient = Orient::Rim;      // curved lights, polygon methods: its orientation rule
 
     // Equal when every key of the key table has the same value (a field that no
     // key row reads would not count: each field is a row).
@@ -87,6 +94,7 @@ const char* to_string(Split s);
 const char* to_string(Factor f);
 const char* to_string(Horizon h);
 const char* to_string(Edge e);
+const char* to_string(Orient o);
 
 // Whether the method is one of seed 000's peak functions (keys fit, specular).
 bool is_peak_method(Method m);
