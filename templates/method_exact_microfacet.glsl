@@ -151,16 +151,110 @@ real al_mf_wrap(real d) {
     return d;
 }
 
-// One arc a -> b of the lit region with inward unit normal m (polygon.glsl).
-// The arc is integrated in pieces about its centre w* (unit tangent t* along the
-// arc), psi = tau - tau*: piece 0 the core, tan(psi) = sigma tan(xi), xi in
-// [c0, c1]; pieces 1 and 2 the outer parts, tan(|psi| / 2) = e^-u, u in [u_end,
-// u1]: as many nodes per decade of psi near the core as far from it (the direct
-// form's integrand does not decay along the arc; the horizon arc of a grazing
-// view spans decades of psi about the fold at w = -v); piece 3, for a
-// near arc in the tail form only, Full(phi) by a Gauss rule over the core's
-// azimuth sweep. One loop over the pieces, so that the node code appears once
-// (on lavapipe each inlined copy of the radial rule costs seconds of JIT time).
+// One boundary piece of the lit region about its centre psi = 0 (where h comes
+// closest to n), psi in [psi_a, psi_b] given by the ends' (sin, cos) up to a
+// positive factor: a great arc w = cos(psi) ws + sin(psi) ts (conic false; inward
+// unit normal m = ws x ts, psi the arc length), or a part of a curved light's
+// boundary w = normalize(C + ws cos psi + ts sin psi) (conic true; ellipse_clip.glsl,
+// m unused). hs: the half vector at the centre; sigma: the core's width in psi.
+// Pieces 0-2 of al_peak_rule, and piece 3, for a near piece in the tail form
+// only, Full(phi) by a Gauss rule over the core's azimuth sweep. One loop over the
+// pieces, so that the node code appears once (on lavapipe each inlined copy of
+// the radial rule costs seconds of JIT time).
+void al_mf_piece(AL_INOUT(AlMoments) M, bool conic, rvec3 C, rvec3 ws, rvec3 ts, rvec3 m,
+                 rvec4 ends, rvec3 hs, real sigma) {
+    real s_h = length(cross(M.n, hs));
+    bool near_arc = s_h < AL_R(2.0) * M.d.width;
+    AlPeakRule rule = al_peak_rule(sigma, ends.x, ends.y, ends.z, ends.w);
+    bool tail_near = !M.direct && near_arc;
+    // The core's azimuth sweep about n in two halves through hs (each less than
+    // pi, however close the piece passes to n): the tail form of a near piece needs it.
+    rvec2 sc0 = al_sincos(rule.c0), sc1 = al_sincos(rule.c1);
+    rvec3 w0, w1;
+    if (conic) {
+        rvec2 e0 = normalize(rvec2(sc0.y, sigma * sc0.x)), e1 = normalize(rvec2(sc1.y, sigma * sc1.x));
+        w0 = normalize(C + e0.x * ws + e0.y * ts);
+        w1 = normalize(C + e1.x * ws + e1.y * ts);
+    } else {
+        w0 = normalize(sc0.y * ws + sigma * sc0.x * ts);
+        w1 = normalize(sc1.y * ws + sigma * sc1.x * ts);
+    }
+    real phi0 = al_mf_azimuth(M, normalize(w0 + M.v));
+    real phi1 = al_mf_azimuth(M, normalize(w1 + M.v));
+    real phi_s = al_mf_azimuth(M, hs);
+    real sweep = al_mf_wrap(phi_s - phi0) + al_mf_wrap(phi1 - phi_s);
+    rvec2 acc[4];
+    for (int piece = 0; piece < 4; ++piece) {
+        acc[piece] = rvec2(AL_R(0.0));
+        bool use_g = M.direct || (piece == 0 && near_arc);
+        rvec2 range = al_peak_range(rule, piece);
+        if (piece == 3) {
+            if (!tail_near || !M.specular_on) continue;
+            range = rvec2(phi0, phi0 + sweep);
+            use_g = false;
+        }
+        real x0 = range.x, x1 = range.y;
+        real half_width = AL_R(0.5) * (x1 - x0), mid = AL_R(0.5) * (x0 + x1);
+        if (!(abs(half_width) > AL_R(0.0))) continue;
+        rvec2 sum = rvec2(AL_R(0.0));
+        for (int j = 0; j < AL_NODES; ++j) {
+            real x = mid + half_width * AL_GL_X[j];
+            rvec3 e;       // unit tangent at n towards the boundary point
+            real c_h = AL_R(1.0), sin2_h = AL_R(0.0), dphi;
+            if (piece == 3) {
+                rvec2 sc = al_sincos(x);
+                e = sc.y * M.e1 + sc.x * M.e2;
+                dphi = AL_GL_W[j];
+            } else {
+                // (cos, sin) of psi up to a positive factor, and dpsi/dx.
+                rvec3 node = al_peak_node(rule, piece, x);
+                real wc = node.x, wsn = node.y;
+                rvec3 wj, dw;  // w and dw/dpsi
+                if (conic) {
+                    real l = inversesqrt(wc * wc + wsn * wsn);
+                    rvec3 P = C + (wc * l) * ws + (wsn * l) * ts;
+                    rvec3 dP = (wc * l) * ts - (wsn * l) * ws;
+                    real il = inversesqrt(dot(P, P));
+                    wj = P * il;
+                    dw = (dP - wj * dot(wj, dP)) * il;
+                } else {
+                    wj = (wc * ws + wsn * ts) * inversesqrt(wc * wc + wsn * wsn);
+                    dw = cross(m, wj);
+                }
+                rvec3 s = wj + M.v;
+                rvec3 ns = cross(M.n, s);
+                real ns2 = dot(ns, ns);
+                if (!(ns2 > AL_R(0.0))) continue;
+                real s2 = dot(s, s);
+                c_h = dot(M.n, s) * inversesqrt(s2);
+                sin2_h = ns2 / s2;
+                // dphi/dpsi = n.(s x w') / |n x s|^2.
+                dphi = AL_GL_W[j] * node.z * dot(ns, dw) / ns2;
+                e = cross(ns * inversesqrt(ns2), M.n);
+                real pot = use_g ? al_ndf_cumulative(M.d, c_h, sin2_h)
+                                 : al_ndf_tail(M.d, c_h, sin2_h);
+                sum.x += pot * dphi;
+            }
+            if (M.specular_on) sum.y += al_mf_potential(M, e, c_h, sin2_h, use_g) * dphi;
+        }
+        acc[piece] = sum * half_width;
+    }
+    rvec2 outer = acc[1] + acc[2];
+    if (!tail_near) {
+        // Direct form: every piece integrated G. Tail form, far piece: every piece T.
+        real sgn = M.direct ? AL_R(1.0) : AL_R(-1.0);
+        M.ndf += sgn * (acc[0].x + outer.x);
+        M.specular += sgn * (acc[0].y + outer.y);
+        return;
+    }
+    // Tail form, near piece: the core integrated G, so -int T dphi = int G dphi -
+    // int Full(phi) dphi over the core (Full = gmax for ndf), and the outer pieces T.
+    M.ndf += acc[0].x - M.d.gmax * sweep - outer.x;
+    M.specular += acc[0].y - acc[3].y - outer.y;
+}
+
+// One arc a -> b of the lit region with inward unit normal m (polygon.glsl),
+// integrated about its centre w* (al_mf_piece).
 void al_moments_arc(AL_INOUT(AlMoments) M, rvec3 a, rvec3 b, rvec3 m, rvec3 axis, rvec3 n,
                     real N) {
     // Centre: where h comes closest to n. Near r the half-vector distance is
@@ -195,100 +289,7 @@ void al_moments_arc(AL_INOUT(AlMoments) M, rvec3 a, rvec3 b, rvec3 m, rvec3 axis
     real w = M.d.width;
     real sigma = clamp(sqrt(s_h * s_h + w * w) / max(speed, AL_R(1e-30)), AL_R(1e-12),
                        AL_R(1e6));
-    bool near_arc = s_h < AL_R(2.0) * w;
-    // The core |tan psi| <= R sigma, and the outer pieces from the core's end (u1)
-    // to the arc's, in u = -log tan(|psi| / 2) = -log(|sin psi| / (1 + cos psi)).
-    const real R = AL_R(3.0);
-    real k = R * sigma;
-    real xa = al_atan2(ta_s, sigma * ta_c), xb = al_atan2(tb_s, sigma * tb_c);
-    real xr = al_atan2(R, AL_R(1.0));
-    real c0 = max(xa, -xr), c1 = min(xb, xr);
-    bool left = xa < -xr, right = xb > xr;
-    real u1 = -al_log(k / (AL_R(1.0) + sqrt(AL_R(1.0) + k * k)));
-    real ua = left ? -al_log(abs(ta_s) / max(AL_R(1.0) + ta_c, AL_R(1e-30))) : u1;
-    real ub = right ? -al_log(abs(tb_s) / max(AL_R(1.0) + tb_c, AL_R(1e-30))) : u1;
-    bool tail_near = !M.direct && near_arc;
-    // The core's azimuth sweep about n in two halves through h(w*) (each less than
-    // pi, however close the arc passes to n): the tail form of a near arc needs it.
-    rvec2 sc0 = al_sincos(c0), sc1 = al_sincos(c1);
-    real phi0 = al_mf_azimuth(M, normalize(normalize(sc0.y * ws + sigma * sc0.x * ts) + M.v));
-    real phi1 = al_mf_azimuth(M, normalize(normalize(sc1.y * ws + sigma * sc1.x * ts) + M.v));
-    real phi_s = al_mf_azimuth(M, hs);
-    real sweep = al_mf_wrap(phi_s - phi0) + al_mf_wrap(phi1 - phi_s);
-    rvec2 acc[4];
-    for (int piece = 0; piece < 4; ++piece) {
-        acc[piece] = rvec2(AL_R(0.0));
-        real x0 = c0, x1 = c1, scale = sigma;
-        bool use_g = M.direct || near_arc;
-        if (piece == 1 || piece == 2) {
-            if (piece == 1 ? !left : !right) continue;
-            x0 = piece == 1 ? ua : ub;
-            x1 = u1;
-            scale = piece == 1 ? -k : k;
-            use_g = M.direct;
-        } else if (piece == 3) {
-            if (!tail_near || !M.specular_on) continue;
-            x0 = phi0;
-            x1 = phi0 + sweep;
-            use_g = false;
-        }
-        real half_width = AL_R(0.5) * (x1 - x0), mid = AL_R(0.5) * (x0 + x1);
-        if (!(abs(half_width) > AL_R(0.0))) continue;
-        rvec2 sum = rvec2(AL_R(0.0));
-        for (int j = 0; j < AL_NODES; ++j) {
-            real x = mid + half_width * AL_GL_X[j];
-            rvec3 e;       // unit tangent at n towards the boundary point
-            real c_h = AL_R(1.0), sin2_h = AL_R(0.0), dphi;
-            if (piece == 3) {
-                rvec2 sc = al_sincos(x);
-                e = sc.y * M.e1 + sc.x * M.e2;
-                dphi = AL_GL_W[j];
-            } else {
-                // (cos, sin) of psi up to a positive factor, and dtau/dx.
-                real wc, wsn, dtau;
-                if (piece == 0) {
-                    rvec2 sc = al_sincos(x);
-                    wc = sc.y;
-                    wsn = scale * sc.x;
-                    dtau = scale / (wc * wc + wsn * wsn);
-                } else {
-                    // tan(|psi| / 2) = e^-x: (cos, sin) ~ (1 - T^2, 2 T), |dpsi/dx| = sin |psi|.
-                    real T = al_exp(-x);
-                    wc = (AL_R(1.0) - T) * (AL_R(1.0) + T);
-                    wsn = AL_R(2.0) * T * sign(scale);
-                    dtau = AL_R(2.0) * T / (AL_R(1.0) + T * T);
-                }
-                rvec3 wj = (wc * ws + wsn * ts) * inversesqrt(wc * wc + wsn * wsn);
-                rvec3 s = wj + M.v;
-                rvec3 ns = cross(M.n, s);
-                real ns2 = dot(ns, ns);
-                if (!(ns2 > AL_R(0.0))) continue;
-                real s2 = dot(s, s);
-                c_h = dot(M.n, s) * inversesqrt(s2);
-                sin2_h = ns2 / s2;
-                // dphi/dtau = n.(s x w') / |n x s|^2, w' = m x w.
-                dphi = AL_GL_W[j] * dtau * dot(ns, cross(m, wj)) / ns2;
-                e = cross(ns * inversesqrt(ns2), M.n);
-                real pot = use_g ? al_ndf_cumulative(M.d, c_h, sin2_h)
-                                 : al_ndf_tail(M.d, c_h, sin2_h);
-                sum.x += pot * dphi;
-            }
-            if (M.specular_on) sum.y += al_mf_potential(M, e, c_h, sin2_h, use_g) * dphi;
-        }
-        acc[piece] = sum * half_width;
-    }
-    rvec2 outer = acc[1] + acc[2];
-    if (!tail_near) {
-        // Direct form: every piece integrated G. Tail form, far arc: every piece T.
-        real sgn = M.direct ? AL_R(1.0) : AL_R(-1.0);
-        M.ndf += sgn * (acc[0].x + outer.x);
-        M.specular += sgn * (acc[0].y + outer.y);
-        return;
-    }
-    // Tail form, near arc: the core integrated G, so -int T dphi = int G dphi -
-    // int Full(phi) dphi over the core (Full = gmax for ndf), and the outer pieces T.
-    M.ndf += acc[0].x - M.d.gmax * sweep - outer.x;
-    M.specular += acc[0].y - acc[3].y - outer.y;
+    al_mf_piece(M, false, rvec3(AL_R(0.0)), ws, ts, m, rvec4(ta_s, ta_c, tb_s, tb_c), hs, sigma);
 }
 
 // (specular, ndf) of the streamed region. In the tail form n is not in R_h

@@ -35,6 +35,29 @@ rvec3 al_crossing(rvec3 a, rvec3 b, real da, real db) {
     return normalize((da * b - db * a) / (da - db));
 }
 
+// The arc xn -> en along n's circle (xn where the boundary leaves n's hemisphere, en
+// where it re-enters), clipped by the axis's hemisphere unless !clip_axis: its ends
+// a, b, whether any of it is left, and where it leaves (yo) or re-enters (yi) the
+// axis's hemisphere, if it does.
+bool al_horizon_arc(rvec3 xn, rvec3 en, rvec3 axis, bool clip_axis, AL_INOUT(rvec3) a,
+                    AL_INOUT(rvec3) b, AL_INOUT(rvec3) yo, AL_INOUT(bool) has_yo,
+                    AL_INOUT(rvec3) yi, AL_INOUT(bool) has_yi) {
+    real rx = dot(axis, xn), re = dot(axis, en);
+    bool jx = !clip_axis || rx >= AL_R(0.0), je = !clip_axis || re >= AL_R(0.0);
+    rvec3 q = jx != je ? al_crossing(xn, en, rx, re) : xn;
+    if (jx && !je) {
+        yo = q;
+        has_yo = true;
+    }
+    if (!jx && je) {
+        yi = q;
+        has_yi = true;
+    }
+    a = jx ? xn : q;
+    b = je ? en : q;
+    return jx || je;
+}
+
 #if !defined(AL_METHOD_POINT) && !defined(AL_METHOD_LTC)
 // Streams the arcs of D = light ∩ {n.w >= 0} ∩ {axis.w >= 0} into the method's
 // accumulator M (al_moments_arc) and returns the irradiance / pi of light ∩ {n.w >= 0}
@@ -109,20 +132,7 @@ real al_polygon_stream(AlCase c, real side, rvec3 n, rvec3 axis, bool clip_axis,
             m = n;
             if (has_xn && has_en) {
                 lit_sum += al_arc(xn, en, n);
-                real rx = dot(axis, xn), re = dot(axis, en);
-                bool jx = !clip_axis || rx >= AL_R(0.0), je = !clip_axis || re >= AL_R(0.0);
-                rvec3 q = jx != je ? al_crossing(xn, en, rx, re) : xn;
-                if (jx && !je) {
-                    yo = q;
-                    has_yo = true;
-                }
-                if (!jx && je) {
-                    yi = q;
-                    has_yi = true;
-                }
-                d_arc = jx || je;
-                a = jx ? xn : q;
-                b = je ? en : q;
+                d_arc = al_horizon_arc(xn, en, axis, clip_axis, a, b, yo, has_yo, yi, has_yi);
             }
         } else {
             // Along the axis's circle (normal axis), from D's exit to its entry.
