@@ -306,7 +306,8 @@ std::vector<VariantFamily> family_rows() {
 // (proxy, orient) and every other key held at its default. Phong offers the
 // paper's form (proxy=4, orient=paper) beside ours; the microfacet methods only
 // the default, which is what their error is measured for. The point baseline has
-// its own template: the ellipse's centre and solid angle.
+// its own template: the ellipse's centre and solid angle. The exact methods shade
+// the ellipse itself (ellipse_clip.glsl, light_ellipse.glsl).
 std::vector<VariantFamily> curved_rows(const std::vector<VariantFamily>& polygon_rows,
                                        const std::vector<KeyRow>& keys) {
     using L = LightType;
@@ -320,11 +321,33 @@ std::vector<VariantFamily> curved_rows(const std::vector<VariantFamily>& polygon
     for (L light : {L::Disk, L::Sphere, L::Ellipsoid}) {
         for (const auto& row : polygon_rows) {
             if (!is_peak_method(row.method) && row.method != Method::Ltc &&
-                row.method != Method::Point)
+                row.method != Method::Point && row.method != Method::Exact)
                 continue;
             VariantFamily f = row;
             f.light = light;
             f.keys.clear();
+            if (row.method == Method::Exact) {
+                // The light's true boundary, clipped in closed form (ellipse_clip.glsl), at
+                // the polygon family's default keys only (CI compiles every variant).
+                f.templates.clear();
+                for (const auto& t : row.templates) {
+                    if (t == "light_polygon.glsl" || t == "peak_rule.glsl") continue;
+                    if (t.rfind("method_exact_", 0) == 0) {
+                        f.templates.push_back("conic.glsl");
+                        f.templates.push_back("peak_rule.glsl");
+                    }
+                    f.templates.push_back(t);
+                }
+                f.templates.push_back("ellipse_clip.glsl");
+                f.templates.push_back("light_ellipse.glsl");
+                for (const auto& k : row.keys) {
+                    if (k.key == "sided" || k.key == "verts") continue;
+                    const std::string d = default_of(k);
+                    f.keys.emplace_back(k.key, std::vector<std::string>{d}, d);
+                }
+                out.push_back(std::move(f));
+                continue;
+            }
             if (row.method == Method::Point) {
                 f.templates.clear();
                 for (const auto& t : row.templates)

@@ -39,6 +39,10 @@
 // lobe's own scale.
 //
 // Error: see the README's microfacet table (arealight eval + shared/tools/score).
+//
+// Curved lights (disk, sphere, ellipsoid): the same pieces along their curved
+// boundary (al_mf_piece with conic true; al_moments_conic, ellipse_clip.glsl), w and
+// w' at each node from the ellipse's parametrisation instead of the arc's.
 
 struct AlMoments {
     rvec3 n, v, r;
@@ -291,6 +295,24 @@ void al_moments_arc(AL_INOUT(AlMoments) M, rvec3 a, rvec3 b, rvec3 m, rvec3 axis
                        AL_R(1e6));
     al_mf_piece(M, false, rvec3(AL_R(0.0)), ws, ts, m, rvec4(ta_s, ta_c, tb_s, tb_c), hs, sigma);
 }
+
+#ifdef AL_LIGHT_CURVED
+// One part [psi0, psi1] (at most pi/2) of a curved light's boundary (ellipse_clip.glsl;
+// a and b, its ends, only matter to Phong's accumulator), in the sub-parts of
+// al_conic_plan: about where h comes closest to n (lobe width: the distribution's),
+// about the fold near w = -v where the view grazes (h turns fast there: |dh| =
+// |dw_perp| / |w + v|), and about p's nearest point on the light's rim.
+void al_moments_conic(AL_INOUT(AlMoments) M, rvec3 C, rvec3 U, rvec3 V, real psi0, real psi1,
+                      rvec3 a, rvec3 b, rvec3 axis, rvec3 n, real N) {
+    AlConicPlan plan = al_conic_plan(C, U, V, psi0, psi1, M.n, M.v, M.d.width, true);
+    for (int k = 0; k < 4; ++k) {
+        if (k >= plan.count) break;
+        AlConicFrame f = al_conic_frame(U, V, plan.sub[k]);
+        al_mf_piece(M, true, C, f.Us, f.Vs, rvec3(AL_R(0.0)), f.ends,
+                    normalize(normalize(C + f.Us) + M.v), plan.sub[k].w);
+    }
+}
+#endif
 
 // (specular, ndf) of the streamed region. In the tail form n is not in R_h
 // (r is outside R), so Full never enters.

@@ -29,6 +29,8 @@
 // uploaded case. precision=fp32: max 1.7e-5 (horizon), because a small result is a
 // sum of O(1) boundary terms and fp32 holds them to ~6e-8 absolute.
 // Cost: O(AL_NODES) per edge, independent of N.
+// Curved lights (disk, sphere, ellipsoid): al_lobe_conic below integrates the parts
+// of their curved boundary with the same forms (ellipse_clip.glsl, light_ellipse.glsl).
 
 // Per-arc sums for the arc a -> b with inward unit normal m (phong_edge.glsl).
 AlLobeEdge al_lobe_edge(rvec3 a, rvec3 b, rvec3 m, rvec3 r, rvec3 n, real N) {
@@ -67,3 +69,63 @@ AlLobeEdge al_lobe_edge(rvec3 a, rvec3 b, rvec3 m, rvec3 r, rvec3 n, real N) {
     e.sums = rvec3(sgn * E.rm * acc.x, sgn * E.rm * acc.y, dot(n, m) * acc.z);
     return e;
 }
+
+#ifdef AL_LIGHT_CURVED
+// One sub-part (lo, hi, centre, sigma) of a curved light's boundary in D
+// (al_conic_plan, ellipse_clip.glsl): al_lobe_edge's sums with the arc's (r.m) dtau
+// and (n.m) dtau replaced by r.(u x u') dpsi and n.(u x u') dpsi (the derivation
+// above holds on any piecewise smooth boundary), and in .w the rule's own estimate
+// of the azimuth swept about r, int r.(u x u') / (1 - x^2) dpsi (reliable on far
+// parts, the only ones whose sweep counts: al_moments_conic). Nodes: al_peak_rule
+// about the sub-part's centre. Far form where x^(N+1) < 1e-3 or N s^2 > 4 at the
+// sub-part's closest point to r among its centre and ends (the plan puts any
+// interior approach to r at a centre).
+rvec4 al_lobe_conic(rvec3 C, rvec3 U, rvec3 V, rvec4 sub, rvec3 r, rvec3 n, real N,
+                    AL_INOUT(bool) near_part) {
+    AlConicFrame f = al_conic_frame(U, V, sub);
+    rvec3 Us = f.Us, Vs = f.Vs;
+    real x_max = max(dot(r, normalize(C + Us)),
+                     max(dot(r, normalize(al_conic_point(C, Us, Vs, rvec2(f.ends.x, f.ends.y)))),
+                         dot(r, normalize(al_conic_point(C, Us, Vs, rvec2(f.ends.z, f.ends.w))))));
+    bool far_part = N * (AL_R(1.0) - x_max * x_max) > AL_R(4.0) ||
+                    (N + AL_R(1.0)) * al_log(max(x_max, AL_R(1e-30))) < AL_R(-6.9);
+    AlPeakRule rule = al_peak_rule(sub.w, f.ends.x, f.ends.y, f.ends.z, f.ends.w);
+    real k1 = N + AL_R(1.0);
+    rvec4 acc = rvec4(AL_R(0.0));
+    for (int piece = 0; piece < 3; ++piece) {
+        rvec2 range = al_peak_range(rule, piece);
+        real half_width = AL_R(0.5) * (range.y - range.x), mid = AL_R(0.5) * (range.x + range.y);
+        if (!(half_width > AL_R(0.0))) continue;
+        rvec4 sum = rvec4(AL_R(0.0));
+        for (int j = 0; j < AL_NODES; ++j) {
+            rvec3 node = al_peak_node(rule, piece, mid + half_width * AL_GL_X[j]);
+            real l = inversesqrt(node.x * node.x + node.y * node.y);
+            real cd = node.x * l, sd = node.y * l;
+            rvec3 P = C + Us * cd + Vs * sd;
+            rvec3 dP = Vs * cd - Us * sd;
+            real q = dot(P, P);
+            rvec3 w = P * inversesqrt(q);
+            rvec3 J = cross(P, dP) / q;  // u x du/dpsi
+            real wt = AL_GL_W[j] * node.z;
+            real rJ = dot(r, J), nJ = dot(n, J);
+            rvec3 rxw = cross(r, w);
+            real y = dot(rxw, rxw);  // 1 - x^2
+            real lx = y < AL_R(1.0) && dot(r, w) > AL_R(0.0) ? AL_R(0.5) * al_log1p(-y)
+                                                            : AL_R(-1.0e30);
+            real xn = al_exp(N * lx);
+            if (far_part) {
+                sum += wt * rvec4(rJ * xn * al_exp(lx) / y, rJ * xn / y, nJ * xn, AL_R(0.0));
+            } else {
+                real g1 = y > AL_R(1e-30) ? -al_expm1(k1 * lx) / y : AL_R(0.5) * k1;
+                real g0 = y > AL_R(1e-30) ? -al_expm1(N * lx) / y : AL_R(0.5) * N;
+                sum += wt * rvec4(rJ * g1, rJ * g0, nJ * xn, AL_R(0.0));
+            }
+            if (y > AL_R(1e-300)) sum.w += wt * rJ / y;
+        }
+        acc += sum * half_width;
+    }
+    near_part = !far_part;
+    real sgn = far_part ? AL_R(1.0) : AL_R(-1.0);
+    return rvec4(sgn * acc.x, sgn * acc.y, acc.z, acc.w);
+}
+#endif

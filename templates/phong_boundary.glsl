@@ -52,3 +52,44 @@ rvec2 al_moments_end(AlMoments M, rvec3 r, rvec3 n, real N) {
     real specular = (dot(r, n) * (winding - M.sums.y) + M.sums.z) / AL_TWO_PI;
     return rvec2(specular, moment);
 }
+
+#if defined(AL_LIGHT_CURVED) && defined(AL_METHOD_EXACT)
+// One part [psi0, psi1] of a curved light's boundary in D from a to b (the same
+// vectors as the neighbouring pieces' ends, so that the sweeps telescope;
+// ellipse_clip.glsl), in the sub-parts of al_conic_plan (lobe width 2 / sqrt(N)).
+// A sub-part may sweep more than pi about r: its sweep is the ends' azimuth
+// difference plus the multiple of 2 pi nearest the rule's estimate. Only far
+// sub-parts' multiples count: al_moments_end's two forms both equal the far ones'
+// total sweep whatever multiple a near one is given (near ones keep the wrapped
+// difference), and away from r (far) the estimate is accurate.
+void al_moments_conic(AL_INOUT(AlMoments) M, rvec3 C, rvec3 U, rvec3 V, real psi0, real psi1,
+                      rvec3 a, rvec3 b, rvec3 r, rvec3 n, real N) {
+    AlConicPlan plan = al_conic_plan(C, U, V, psi0, psi1, r, rvec3(AL_R(0.0)),
+                                     AL_R(2.0) * inversesqrt(N), true);
+    rvec3 start = a;
+    for (int k = 0; k < 4; ++k) {
+        if (k >= plan.count) break;
+        rvec4 sub = plan.sub[k];
+        rvec3 end = k + 1 == plan.count ? b : normalize(al_conic_point(C, U, V, al_cis(sub.y)));
+        bool near_part;
+        rvec4 e = al_lobe_conic(C, U, V, sub, r, n, N, near_part);
+        real raw = al_atan2(dot(end, M.e2), dot(end, M.e1)) -
+                   al_atan2(dot(start, M.e2), dot(start, M.e1));
+        real sweep = al_wrap_sweep(raw, M.wraps);
+        if (!near_part) {
+            real wraps = floor((raw - e.w) / AL_TWO_PI + AL_R(0.5));
+            M.wraps += wraps - (raw - sweep) / AL_TWO_PI;
+            sweep = raw - AL_TWO_PI * wraps;
+        }
+        M.sums += rvec3(e);
+        if (near_part) {
+            M.sweep_near += sweep;
+            M.size_near += abs(sweep);
+        } else {
+            M.sweep_far += sweep;
+            M.size_far += abs(sweep);
+        }
+        start = end;
+    }
+}
+#endif

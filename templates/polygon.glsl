@@ -58,7 +58,9 @@ bool al_horizon_arc(rvec3 xn, rvec3 en, rvec3 axis, bool clip_axis, AL_INOUT(rve
     return jx || je;
 }
 
-#if !defined(AL_METHOD_POINT) && !defined(AL_METHOD_LTC)
+// (Curved lights shaded along their true boundary have no polygon: AL_MAX_VERTS
+// undefined, and ellipse_clip.glsl streams instead.)
+#if !defined(AL_METHOD_POINT) && !defined(AL_METHOD_LTC) && defined(AL_MAX_VERTS)
 // Streams the arcs of D = light ∩ {n.w >= 0} ∩ {axis.w >= 0} into the method's
 // accumulator M (al_moments_arc) and returns the irradiance / pi of light ∩ {n.w >= 0}
 // (Lambert: sum arc_i (n.m_i) / (2 pi), exact). Without clip_axis, D = light ∩
