@@ -1,0 +1,195 @@
+#!/usr/bin/env python3
+"""Seeded curved-light cases (arealight-cases/1) that stress the exact methods.
+
+Usage: gen_curved_cases.py COUNT SEED OUT.json [--kind hard|near]
+
+--kind hard (default): disks, spheres and ellipsoids (in turn) for phong, blinn,
+beckmann and ggx (in turn), each in one of
+  horizon  the light's centre within its own angular size of n's horizon
+  large    p close to the light: distance 1.01 to 2.5 times its size
+  rim      r aimed 1e-6 to 1e-2 rad off a point of the light's silhouette
+  grazing  n.v in [1e-3, 0.05]
+(rim and horizon twice as often); sizes 0.03 to 1, axis ratios up to 10, a
+third of the disks two-sided; N log-uniform in [1, 1e5], alpha in [1e-3, 1].
+--kind near: p at a distance eps in {1e-2, 1e-3, 1e-4, 1e-5} from a light's
+boundary: beside the rim of an elliptic disk (semi-axes 1, 0.4; above its plane
+or in it), near the disk's plane outside its rim, outside a unit sphere and an
+ellipsoid (semi-axes 1.5, 0.5, 0.8) by a factor 1 + eps; materials as above.
+
+The same COUNT, SEED and kind give the same file (near: COUNT is ignored, 96
+cases). The oracle: arealight reference --cases OUT.json --out REF.json.
+"""
+import argparse, json, math, random
+
+
+def unit(v):
+    l = math.sqrt(sum(x * x for x in v))
+    return [x / l for x in v]
+
+
+def cross(a, b):
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
+def dot(a, b):
+    return sum(x * y for x, y in zip(a, b))
+
+
+def add(a, b, s=1.0):
+    return [x + s * y for x, y in zip(a, b)]
+
+
+def scale(a, s):
+    return [x * s for x in a]
+
+
+class Gen:
+    def __init__(self, seed):
+        self.rng = random.Random(seed)
+
+    def rand_unit(self):
+        while True:
+            v = [self.rng.gauss(0, 1) for _ in range(3)]
+            if dot(v, v) > 1e-6:
+                return unit(v)
+
+    def frame(self, z):
+        x = unit(cross(z, self.rand_unit()))
+        return x, cross(z, x)
+
+    def material(self, dist):
+        if dist in ("phong", "blinn"):
+            return {"distribution": dist, "exponent": 10 ** self.rng.uniform(0, 5)}
+        return {"distribution": dist, "alpha": 10 ** self.rng.uniform(-3, 0)}
+
+
+def hard_case(g, index, dist, ltype):
+    rng = g.rng
+    scen = rng.choice(["horizon", "large", "rim", "grazing", "rim", "horizon"])
+    p = [rng.uniform(-3, 3) for _ in range(3)]
+    n = g.rand_unit()
+    size = 10 ** rng.uniform(-1.5, 0)
+    d = size * (10 ** rng.uniform(0.005, 0.4) if scen == "large" else 10 ** rng.uniform(0.02, 1.3))
+    if scen == "horizon":
+        e1, _ = g.frame(n)
+        ang = rng.uniform(-0.6, 0.6) * size / d
+        dirc = unit(add(scale(e1, math.cos(ang)), n, math.sin(ang)))
+    else:
+        while True:
+            dirc = g.rand_unit()
+            if dot(dirc, n) > 0.05:
+                break
+    c = add(p, dirc, d)
+    if ltype == "disk":
+        a = g.rand_unit()
+        b, w = g.frame(a)
+        u, vv = scale(b, size), scale(w, size * 10 ** rng.uniform(-1, 0))
+        if dot(cross(u, vv), add(p, c, -1)) < 0:
+            vv = scale(vv, -1)
+        light = {"type": "disk", "center": c, "u": u, "v": vv, "two_sided": rng.random() < 0.3}
+        rim = lambda th: add(add(c, u, math.cos(th)), vv, math.sin(th))
+    elif ltype == "sphere":
+        R = d * rng.uniform(0.3, 0.99) if scen == "large" else size
+        R = min(R, 0.9 * d)
+        light = {"type": "sphere", "center": c, "radius": R}
+        z = unit(add(c, p, -1))
+        e1, e2 = g.frame(z)
+        rho2 = 1 - (R / d) ** 2
+        cs, rs = add(p, add(c, p, -1), rho2), R * math.sqrt(rho2)
+        rim = lambda th: add(add(cs, e1, rs * math.cos(th)), e2, rs * math.sin(th))
+    else:
+        a0 = g.rand_unit()
+        a1, a2 = g.frame(a0)
+        lengths = [size, size * 10 ** rng.uniform(-1, 0), size * 10 ** rng.uniform(-1, 0)]
+        axes = [scale(a0, lengths[0]), scale(a1, lengths[1]), scale(a2, lengths[2])]
+        yp = [dot(add(p, c, -1), axes[k]) / dot(axes[k], axes[k]) for k in range(3)]
+        t = math.sqrt(dot(yp, yp))
+        if t <= 1.02:
+            return None
+        light = {"type": "ellipsoid", "center": c, "axes": axes}
+        f1, f2 = g.frame(scale(yp, 1 / t))
+        rho = math.sqrt(1 - 1 / t ** 2)
+
+        def rim(th):
+            y = add(add(scale(yp, 1 / t ** 2), f1, rho * math.cos(th)), f2, rho * math.sin(th))
+            return add(c, add(add(scale(axes[0], y[0]), axes[1], y[1]), axes[2], y[2]))
+    if scen == "rim":
+        tdir = unit(add(rim(rng.uniform(0, 2 * math.pi)), p, -1))
+        off = g.rand_unit()
+        off = unit(add(off, tdir, -dot(off, tdir)))
+        tdir = unit(add(tdir, off, 10 ** rng.uniform(-6, -2)))
+        if dot(tdir, n) < 0.02:
+            return None
+        v = add(scale(n, 2 * dot(n, tdir)), tdir, -1)
+    elif scen == "grazing":
+        e1, _ = g.frame(n)
+        cv = 10 ** rng.uniform(-3, -1.3)
+        v = add(scale(e1, math.sqrt(1 - cv * cv)), n, cv)
+    else:
+        while True:
+            v = g.rand_unit()
+            if dot(v, n) > 0.02:
+                break
+    return {"id": "hard-%s-%s-%s-%03d" % (scen, ltype, dist, index), "p": p, "n": n, "v": v,
+            "light": light, "material": g.material(dist)}
+
+
+def hard_cases(count, seed):
+    g, cases, i = Gen(seed), [], 0
+    dists = ["phong", "blinn", "beckmann", "ggx"]
+    while len(cases) < count:
+        i += 1
+        c = hard_case(g, len(cases), dists[i % 4], ["disk", "sphere", "ellipsoid"][(i // 4) % 3])
+        if c:
+            cases.append(c)
+    return cases
+
+
+def near_cases(seed):
+    g = Gen(seed)
+    rng = g.rng
+    rnd = lambda: [rng.uniform(-0.6, 0.6), rng.uniform(-0.6, 0.6), 1.0]
+    disk = {"type": "disk", "center": [0, 0, 0], "u": [1, 0, 0], "v": [0, -0.4, 0], "two_sided": True}
+    axes = [[1.5, 0, 0], [0, 0.5, 0], [0, 0, 0.8]]
+    cases, i = [], 0
+
+    def add_case(kind, eps, p, light):
+        nonlocal i
+        dist = ["phong", "ggx", "blinn", "beckmann"][(i + i // 4) % 4]  # every kind, every dist
+        cases.append({"id": "near-%s-%d-%g" % (kind, i, eps), "p": p, "n": rnd(), "v": rnd(),
+                      "material": g.material(dist), "light": light})
+        i += 1
+
+    for eps in [1e-2, 1e-3, 1e-4, 1e-5]:
+        for _ in range(6):
+            th = rng.uniform(0, 2 * math.pi)
+            rim = [math.cos(th), 0.4 * math.sin(th), 0]
+            out = unit([0.4 * math.cos(th), math.sin(th), 0])
+            ang = rng.uniform(0.02, math.pi - 0.02)
+            add_case("rim", eps, [rim[0] + eps * math.cos(ang) * out[0],
+                                  rim[1] + eps * math.cos(ang) * out[1], eps * math.sin(ang)], disk)
+            add_case("plane", eps, [rng.uniform(1.2, 3), rng.uniform(-1, 1), eps * rng.choice([-1, 1])],
+                     disk)
+            y = g.rand_unit()
+            add_case("sphere", eps, scale(y, 1 + eps),
+                     {"type": "sphere", "center": [0, 0, 0], "radius": 1.0})
+            add_case("ellipsoid", eps, [axes[k][k] * y[k] * (1 + eps) for k in range(3)],
+                     {"type": "ellipsoid", "center": [0, 0, 0], "axes": axes})
+    return cases
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("count", type=int)
+    ap.add_argument("seed", type=int)
+    ap.add_argument("out")
+    ap.add_argument("--kind", choices=["hard", "near"], default="hard")
+    a = ap.parse_args()
+    cases = hard_cases(a.count, a.seed) if a.kind == "hard" else near_cases(a.seed)
+    with open(a.out, "w") as f:
+        json.dump({"format": "arealight-cases/1", "cases": cases}, f, indent=1)
+        f.write("\n")
+
+
+if __name__ == "__main__":
+    main()
