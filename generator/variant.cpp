@@ -197,7 +197,7 @@ std::vector<KeyRow> key_rows() {
         key("edge",               &Variant::edge,        kEdges,         one_hot("AL_EDGE_"),
             "method=ltc: edge integral theta / sin(theta) by acos, or poly (a polynomial "
             "in cos(theta), seed 001)"),
-        key("proxy",              &Variant::proxy,       {4, 8},         number("AL_MAX_VERTS"),
+        key("proxy",              &Variant::proxy,       {4, 16},         number("AL_MAX_VERTS"),
             "curved lights through a polygon method: sides of the spinning proxy polygon "
             "(seed 000 section 9)"),
         key("orient",             &Variant::orient,      kOrients,       one_hot("AL_ORIENT_"),
@@ -331,7 +331,7 @@ std::vector<VariantFamily> curved_rows(const std::vector<VariantFamily>& polygon
                 continue;
             }
             const bool phong = row.dist == Distribution::Phong && row.method != Method::Ltc;
-            f.keys.push_back(phong ? FamilyKey("proxy") : FamilyKey("proxy", {"8"}));
+            f.keys.push_back(phong ? FamilyKey("proxy") : FamilyKey("proxy", {"16"}));
             f.keys.push_back(phong ? FamilyKey("orient") : FamilyKey("orient", {"rim"}));
             for (const auto& k : row.keys) {
                 if (k.key == "sided" || k.key == "verts") continue;

@@ -213,6 +213,8 @@ TEST_CASE("ltc: every variant finite and non-negative at the extremes", "[shadin
         c.material.distribution = Distribution::Phong;
         set.cases.push_back(c);
     }
+    const CaseSet curved = curved_cases_like(set, 23);
+    set.cases.insert(set.cases.end(), curved.cases.begin(), curved.cases.end());
     for (const auto& v : enumerate_variants()) {
         if (v.method != Method::Ltc) continue;
         const std::string name = canonical_name(v);
