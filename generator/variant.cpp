@@ -303,7 +303,9 @@ std::vector<VariantFamily> family_rows() {
 // (proxy, orient) and every other key held at its default. Phong offers the
 // paper's form (proxy=4, orient=paper) beside ours; the microfacet methods only
 // the default, which is what their error is measured for. The point baseline has
-// its own template: the ellipse's centre and solid angle.
+// its own template: the ellipse's centre and solid angle. LTC shades the ellipse
+// itself (Heitz & Hill 2017: a linear map keeps it an ellipse; templates/ltc_ellipse.glsl)
+// with the polygon LTC's tables, so it takes no proxy keys and no edge key.
 std::vector<VariantFamily> curved_rows(const std::vector<VariantFamily>& polygon_rows,
                                        const std::vector<KeyRow>& keys) {
     using L = LightType;
@@ -330,7 +332,13 @@ std::vector<VariantFamily> curved_rows(const std::vector<VariantFamily>& polygon
                 out.push_back(std::move(f));
                 continue;
             }
-            const bool phong = row.dist == Distribution::Phong && row.method != Method::Ltc;
+            if (row.method == Method::Ltc) {
+                f.templates = {"method_ltc.glsl", "ellipse_cone.glsl", "ltc_ellipse.glsl"};
+                f.keys = {FamilyKey("precision", {"fp32"}, "fp32"), FamilyKey("horizon")};
+                out.push_back(std::move(f));
+                continue;
+            }
+            const bool phong = row.dist == Distribution::Phong;
             f.keys.push_back(phong ? FamilyKey("proxy") : FamilyKey("proxy", {"16"}));
             f.keys.push_back(phong ? FamilyKey("orient") : FamilyKey("orient", {"rim"}));
             for (const auto& k : row.keys) {
