@@ -210,14 +210,20 @@ TEST_CASE("curved lights: zero inside, on the plane and behind; two-sided disks 
             in.p = a3(g(c.light.center) + 0.7 * g(c.light.axes[1]));
             zero.cases.push_back(in);
         } else {
-            // p moved onto the disk's plane (outside the disk), and a one-sided disk seen
-            // from behind: its mirror image through the plane.
+            // p on the disk's plane, exactly in any precision (an axis-aligned disk at
+            // z = 2, p.z = 2; outside and inside its rim), and a one-sided disk seen from
+            // behind: its mirror image through the plane.
             const glm::dvec3 normal = glm::normalize(glm::cross(g(c.light.u), g(c.light.v)));
             const glm::dvec3 cp = g(c.p) - g(c.light.center);
-            Case on = c;
-            on.id += "-on-plane";
-            on.p = a3(g(c.p) - glm::dot(cp, normal) * normal);
-            zero.cases.push_back(on);
+            for (double x : {0.25, 0.75}) {
+                Case on = c;
+                on.id += "-on-plane-" + std::to_string(x);
+                on.light.center = {0.0, 0.0, 2.0};
+                on.light.u = {0.5, 0.0, 0.0};
+                on.light.v = {0.0, 0.25, 0.0};
+                on.p = {x, 0.125, 2.0};
+                zero.cases.push_back(on);
+            }
             auto mirror = [&](const glm::dvec3& x) { return x - 2 * glm::dot(x, normal) * normal; };
             Case behind = c;
             behind.id += "-behind";
