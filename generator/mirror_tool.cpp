@@ -73,6 +73,7 @@ int main(int argc, char** argv) {
         // of a great circle at distance s = r.m from the lobe axis.
         const bool probe = variants[i].dist == arealight::Distribution::Phong &&
                            arealight::is_peak_method(variants[i].method) &&
+                           variants[i].light == arealight::LightType::Polygon &&
                            variants[i].sided == arealight::Sided::Any &&
                            variants[i].verts == arealight::Variant{}.verts &&
                            variants[i].specular == arealight::SpecularForm::TwoAxis;

@@ -197,7 +197,7 @@ std::vector<KeyRow> key_rows() {
         key("edge",               &Variant::edge,        kEdges,         one_hot("AL_EDGE_"),
             "method=ltc: edge integral theta / sin(theta) by acos, or poly (a polynomial "
             "in cos(theta), seed 001)"),
-        key("proxy",              &Variant::proxy,       {4, 8},         number("AL_MAX_VERTS"),
+        key("proxy",              &Variant::proxy,       {4, 16},         number("AL_MAX_VERTS"),
             "curved lights through a polygon method: sides of the spinning proxy polygon "
             "(seed 000 section 9)"),
         key("orient",             &Variant::orient,      kOrients,       one_hot("AL_ORIENT_"),
@@ -306,8 +306,10 @@ std::vector<VariantFamily> family_rows() {
 // (proxy, orient) and every other key held at its default. Phong offers the
 // paper's form (proxy=4, orient=paper) beside ours; the microfacet methods only
 // the default, which is what their error is measured for. The point baseline has
-// its own template: the ellipse's centre and solid angle. The exact methods shade
-// the ellipse itself (ellipse_clip.glsl, light_ellipse.glsl).
+// its own template: the ellipse's centre and solid angle. LTC shades the ellipse
+// itself (Heitz & Hill 2017: a linear map keeps it an ellipse; templates/ltc_ellipse.glsl)
+// with the polygon LTC's tables, so it takes no proxy keys and no edge key. The exact
+// methods shade the ellipse itself too (ellipse_clip.glsl, light_ellipse.glsl).
 std::vector<VariantFamily> curved_rows(const std::vector<VariantFamily>& polygon_rows,
                                        const std::vector<KeyRow>& keys) {
     using L = LightType;
@@ -356,8 +358,14 @@ std::vector<VariantFamily> curved_rows(const std::vector<VariantFamily>& polygon
                 out.push_back(std::move(f));
                 continue;
             }
-            const bool phong = row.dist == Distribution::Phong && row.method != Method::Ltc;
-            f.keys.push_back(phong ? FamilyKey("proxy") : FamilyKey("proxy", {"8"}));
+            if (row.method == Method::Ltc) {
+                f.templates = {"method_ltc.glsl", "ellipse_cone.glsl", "ltc_ellipse.glsl"};
+                f.keys = {FamilyKey("precision", {"fp32"}, "fp32"), FamilyKey("horizon")};
+                out.push_back(std::move(f));
+                continue;
+            }
+            const bool phong = row.dist == Distribution::Phong;
+            f.keys.push_back(phong ? FamilyKey("proxy") : FamilyKey("proxy", {"16"}));
             f.keys.push_back(phong ? FamilyKey("orient") : FamilyKey("orient", {"rim"}));
             for (const auto& k : row.keys) {
                 if (k.key == "sided" || k.key == "verts") continue;

@@ -14,13 +14,21 @@ $al report "${sets[@]}" --variants dist=phong,light=polygon,verts=8,sided=any --
 for d in blinn beckmann ggx; do
   $al report "${sets[@]}" --variants dist=$d,light=polygon --out docs/report-$d
 done
-$al report "${sets[@]}" --variants method=ltc --out docs/report-ltc
+$al report "${sets[@]}" --variants method=ltc,light=polygon --out docs/report-ltc
+for l in disk sphere ellipsoid; do
+  $al report "${sets[@]}" --variants light=$l --out docs/report-$l
+done
 $al sweep --cases $V/typical.cases.json --variants dist=phong,light=polygon,verts=8,sided=any \
   --out docs/sweep
 for axis in param view; do
   $al sweep --axis $axis --cases $V/typical.cases.json --variants dist=ggx,light=polygon \
     --out docs/sweep-ggx-$axis
 done
+# The spinning polygon against N and alpha (seed 000 9.2: its "brightness variation").
+$al sweep --cases $V/typical.cases.json --variants dist=phong,light=disk,proxy=16 --out docs/sweep-disk
+$al sweep --cases $V/typical.cases.json --variants dist=ggx,light=disk --out docs/sweep-ggx-disk
 $al quality --report docs/report-phong/report.json --report docs/report-blinn/report.json \
   --report docs/report-beckmann/report.json --report docs/report-ggx/report.json \
-  --report docs/report-ltc/report.json --out data/quality/measured.json
+  --report docs/report-ltc/report.json --report docs/report-disk/report.json \
+  --report docs/report-sphere/report.json --report docs/report-ellipsoid/report.json \
+  --out data/quality/measured.json

@@ -16,13 +16,20 @@ const real AL_HALF_PI = AL_R(1.57079632679489661923);
 // 2 (n.v) n - v. verts = polygon vertices relative to the centre (AL_MAX_VERTS
 // used). params =
 // (exponent or alpha, two_sided, vertex count, Schlick f0: 1 gives F = 1).
+// verts holds a polygon light's vertices (at most 8, CONTRACT.md 1) or a curved
+// light's proxy polygon (spin_polygon.glsl), which may have more.
+#if defined(AL_MAX_VERTS) && AL_MAX_VERTS > 8
+#define AL_CASE_VERTS AL_MAX_VERTS
+#else
+#define AL_CASE_VERTS 8
+#endif
 struct AlCase {
     rvec4 n;
     rvec4 v;
     rvec4 r;
     rvec4 params;
     rvec4 center;
-    rvec4 verts[8];
+    rvec4 verts[AL_CASE_VERTS];
 };
 
 // Odd series 2 w (1 + w^2/3 + w^4/5 + ...) = log((1 + w) / (1 - w)) for |w| <= 0.172.

@@ -12,7 +12,7 @@
 // not for an ellipsoid's silhouette), V's sign chosen so that (U x V).centre > 0:
 // with psi increasing, u x du/dpsi then points into the light's cone.
 // params = (exponent or alpha, 0, 1 when a light is seen else 0, f0). `lit` false,
-// a non-finite or zero d, or a degenerate ellipse give a record with params.z = 0,
+// a non-finite or zero d, or an ellipse seen edge-on give a record with params.z = 0,
 // which every method shades as 0.
 AlCase al_ellipse_record(ArealightSurface s, rvec3 rel, rvec3 U, rvec3 V, bool lit) {
     real d = length(rel);
@@ -26,16 +26,19 @@ AlCase al_ellipse_record(ArealightSurface s, rvec3 rel, rvec3 U, rvec3 V, bool l
     rvec3 r = normalize(AL_R(2.0) * dot(n, v) * n - v);
     rvec3 u1 = rvec3(dot(U, x), dot(U, y), dot(U, z)) / d;
     rvec3 v1 = rvec3(dot(V, x), dot(V, y), dot(V, z)) / d;
+    // facing = area cos(theta_l) / d^2: the cone's opening. Below the rounding of
+    // the fp32 inputs (relative 1e-7 of |U||V|) p lies on the light's plane as far as
+    // the inputs can tell, and the cone has no interior: the contract's 0.
     real facing = cross(u1, v1).z;
     if (facing < AL_R(0.0)) v1 = -v1;
-    seen = seen && facing != AL_R(0.0) && !isnan(facing) && !isinf(facing);
+    seen = seen && abs(facing) > AL_R(1e-7) * length(u1) * length(v1) && !isinf(facing);
     AlCase c;
     c.n = rvec4(dot(n, x), dot(n, y), dot(n, z), AL_R(0.0));
     c.v = rvec4(dot(v, x), dot(v, y), dot(v, z), AL_R(0.0));
     c.r = rvec4(dot(r, x), dot(r, y), dot(r, z), AL_R(0.0));
     c.params = rvec4(real(s.param), AL_R(0.0), seen ? AL_R(1.0) : AL_R(0.0), real(s.f0));
     c.center = rvec4(AL_R(0.0), AL_R(0.0), AL_R(1.0), AL_R(0.0));
-    for (int i = 0; i < 8; ++i) c.verts[i] = rvec4(AL_R(0.0));
+    for (int i = 0; i < AL_CASE_VERTS; ++i) c.verts[i] = rvec4(AL_R(0.0));
     if (seen) {
         c.verts[0] = rvec4(u1, AL_R(0.0));
         c.verts[1] = rvec4(v1, AL_R(0.0));

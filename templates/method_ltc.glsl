@@ -8,6 +8,11 @@
 // specular 0). Error: the fit's (README, `arealight report`); diffuse is the exact
 // Lambert term (fp32 rounding only).
 //
+// Curved lights (disk, sphere, ellipsoid) take the same lookup, proxy horizon and
+// magnitude (al_ltc_lookup, al_ltc_proxy_form, al_ltc_magnitude) with the ellipse's
+// own form factor instead of the edge sum (ltc_ellipse.glsl); the polygon's parts
+// below are compiled for polygons only.
+//
 // Keys: horizon=clip clips the transformed polygon to z >= 0 exactly; horizon=proxy
 // (seed 001) integrates it unclipped and replaces the clipped form factor by that of
 // a sphere with the same vector form factor (a table: the amplitude texture's w).
@@ -136,6 +141,7 @@ void al_ltc_clip_edge(hvec3 a, hvec3 b, AL_INOUT(hvec3) sum, AL_INOUT(hvec3) exi
     if (!ia && ib) entry_pt = q;
 }
 
+#ifndef AL_LIGHT_CURVED
 // The same for the Lambert term in the working precision, exact, about n in the
 // case's frame (za = n.a, zb = n.b).
 // The edge's unit normal m comes from the vertex offsets (polygon.glsl's rule: a x (b - a)
@@ -160,30 +166,110 @@ void al_lambert_clip_edge(rvec3 a, rvec3 b, real za, real zb, rvec3 m, rvec3 n,
     }
     if (!ia && ib) entry_pt = q;
 }
+#endif
 
-// Diffuse and specular (CONTRACT.md 2; no ndf or moment).
-vec4 al_shade(AlCase c) {
-    real side = al_polygon_side(c);
-    if (side == AL_R(0.0)) return vec4(AL_R(0.0));
-    rvec3 n = normalize(rvec3(c.n));
+// The case's LTC: n, its frame (z = n, x toward v; ltc_table.hpp), the texels of its
+// roughness and view, and Minv times the frame as rows: t = Minv (d.tx, d.ty, d.n).
+struct AlLtc {
+    rvec3 n;
+    real nv;
+    rvec4 m;
+    rvec4 amp;
+    rvec3 row0;
+    rvec3 row1;
+    rvec3 row2;
+};
+
+AlLtc al_ltc_lookup(AlCase c) {
+    AlLtc L;
+    L.n = normalize(rvec3(c.n));
     rvec3 v = normalize(rvec3(c.v));
-    real nv = dot(n, v);
-    // Frame: z = n, x toward v (ltc_table.hpp). v along n has no azimuth: any x.
-    rvec3 tx = v - n * nv;
+    L.nv = dot(L.n, v);
+    // v along n has no azimuth: any x.
+    rvec3 tx = v - L.n * L.nv;
     real tl = length(tx);
     rvec3 ty;
     if (tl > AL_R(1e-7)) {
         tx /= tl;
-        ty = cross(n, tx);
+        ty = cross(L.n, tx);
     } else {
-        al_tangent_frame(n, tx, ty);
+        al_tangent_frame(L.n, tx, ty);
     }
-    vec2 uv = al_ltc_uv(real(c.params.x), nv);
-    rvec4 m = rvec4(textureLod(al_ltc_matrix, uv, 0.0f));
-    rvec4 amp = rvec4(textureLod(al_ltc_amplitude, uv, 0.0f));
-    // Minv times the frame, as rows: t = Minv (d.tx, d.ty, d.n).
-    rvec3 row0 = m.x * tx + m.y * n, row1 = m.z * ty, row2 = m.w * tx + n;
+    vec2 uv = al_ltc_uv(real(c.params.x), L.nv);
+    L.m = rvec4(textureLod(al_ltc_matrix, uv, 0.0f));
+    L.amp = rvec4(textureLod(al_ltc_amplitude, uv, 0.0f));
+    L.row0 = L.m.x * tx + L.m.y * L.n;
+    L.row1 = L.m.z * ty;
+    L.row2 = L.m.w * tx + L.n;
+    return L;
+}
 
+// Seed 001's horizon: the clipped form factor of a sphere with the light's vector form
+// factor F (vector_ff = 2 pi F, any light): sin^2(sigma) = |F|, cos(omega) = F.z / |F|;
+// |F| S(cos omega, |F|) with S from the table (S = 1 where the sphere is above the
+// horizon). Error: the proxy's (exact for a sphere; README), plus bilinear filtering.
+real al_ltc_proxy_form(hvec3 vector_ff) {
+    real len = real(length(vector_ff)) / AL_TWO_PI;
+    real form = AL_R(0.0);
+    if (len > AL_R(0.0)) {
+        real cz = clamp(real(vector_ff.z) / (len * AL_TWO_PI), AL_R(-1.0), AL_R(1.0));
+        rvec2 suv = (rvec2(cz * AL_R(0.5) + AL_R(0.5), min(len, AL_R(1.0))) *
+                         (AL_LTC_SIZE - AL_R(1.0)) + AL_R(0.5)) / AL_LTC_SIZE;
+        form = len * real(textureLod(al_ltc_amplitude, vec2(suv), 0.0f).w);
+    }
+    return form;
+}
+
+// The lobe's magnitude for a light whose LTC-space vector form factor is vector_ff (any
+// scale; only its direction enters, GGX only), Schlick f0 (1: F = 1).
+real al_ltc_magnitude(AlLtc L, hvec3 vector_ff, real f0) {
+#ifdef AL_DIST_PHONG
+    return L.amp.x;
+#else
+    // Fresnel (seed 001, last section): the table's split f0 A + B is the lobe's
+    // whole-hemisphere average of F. A light holding part of the lobe sees F near
+    // its own part's half vectors, so the (1 - h.v)^5 weight moves by its value at
+    // the light's direction in the lobe (the LTC's vector form factor taken back
+    // through M) less its value for a light filling the hemisphere, so that such a
+    // light stays exact. M = Minv^-1 up to scale: xz block
+    // [[1, -b], [-d, a]], y (a - b d) / c.
+    // Measured on seeded random sets (tests/test_ltc_shading.cpp): the correction
+    // helps GGX (relL2 with random f0 1.81x -> 0.97x that of a perfect Fresnel
+    // channel on the same fit) and hurts the Gaussian-tailed lobes, whose LTC
+    // direction is a poorer guide (beckmann 1.05x -> 1.52x, blinn 1.24x -> 1.52x):
+    // GGX only.
+    rvec4 amp = L.amp;
+    real magnitude = f0 * amp.x + amp.y;
+#ifdef AL_DIST_GGX
+    if (f0 < AL_R(1.0)) {
+        rvec4 m = L.m;
+        real nv = L.nv;
+        rvec3 g = rvec3(vector_ff);
+        rvec3 w = rvec3(g.x - m.y * g.z, g.y * (m.x - m.y * m.w) / m.z, m.x * g.z - m.w * g.x);
+        // The hemisphere's image in the LTC's space is the lune z > 0, (-d, 0, a).w > 0
+        // (M's third row): its vector form factor lies along the sum of the two unit
+        // normals, taken back through M the same way.
+        rvec3 h = rvec3(AL_R(0.0), AL_R(0.0), AL_R(1.0)) +
+                  normalize(rvec3(-m.w, AL_R(0.0), m.x));
+        rvec3 wh = rvec3(h.x - m.y * h.z, AL_R(0.0), m.x * h.z - m.w * h.x);
+        real sv = sqrt(max(AL_R(1.0) - nv * nv, AL_R(0.0)));
+        real x_light = al_ltc_schlick_weight(w, sv, nv);
+        real x_lobe = al_ltc_schlick_weight(wh, sv, nv);
+        if (x_light >= AL_R(0.0) && x_lobe >= AL_R(0.0))
+            magnitude += (AL_R(1.0) - f0) * (amp.x + amp.y) * (x_light - x_lobe);
+    }
+#endif
+    return magnitude;
+#endif
+}
+
+#ifndef AL_LIGHT_CURVED
+// Diffuse and specular (CONTRACT.md 2; no ndf or moment).
+vec4 al_shade(AlCase c) {
+    real side = al_polygon_side(c);
+    if (side == AL_R(0.0)) return vec4(AL_R(0.0));
+    AlLtc L = al_ltc_lookup(c);
+    rvec3 n = L.n;
     int count = int(c.params.z);
     rvec3 center = rvec3(c.center);
     real lambert = AL_R(0.0);
@@ -208,7 +294,7 @@ vec4 al_shade(AlCase c) {
         db = rvec3(c.verts[idx]);
         pb = normalize(center + db);
         zb = dot(pb, n);
-        hb = hvec3(AL_LTC_UNIT(rvec3(dot(pb, row0), dot(pb, row1), dot(pb, row2))));
+        hb = hvec3(AL_LTC_UNIT(rvec3(dot(pb, L.row0), dot(pb, L.row1), dot(pb, L.row2))));
         if (k > 0) {
             rvec3 me = normalize(cross(center + da, db - da));
             al_lambert_clip_edge(pa, pb, za, zb, me, n, lambert, lx, le, has_lx);
@@ -231,20 +317,10 @@ vec4 al_shade(AlCase c) {
     real diffuse = max(lambert, AL_R(0.0)) / AL_TWO_PI;
 
     real specular = AL_R(0.0);
-    if (nv > AL_R(0.0)) {
+    if (L.nv > AL_R(0.0)) {
         real form;
 #ifdef AL_HORIZON_PROXY
-        // Seed 001: a sphere with the polygon's vector form factor F: sin^2(sigma) =
-        // |F|, cos(omega) = F.z / |F|; its clipped form factor |F| S(cos omega, |F|)
-        // from the table (S = 1 where the sphere is above the horizon).
-        real len = real(length(vector_ff)) / AL_TWO_PI;
-        form = AL_R(0.0);
-        if (len > AL_R(0.0)) {
-            real cz = clamp(real(vector_ff.z) / (len * AL_TWO_PI), AL_R(-1.0), AL_R(1.0));
-            rvec2 suv = (rvec2(cz * AL_R(0.5) + AL_R(0.5), min(len, AL_R(1.0))) *
-                             (AL_LTC_SIZE - AL_R(1.0)) + AL_R(0.5)) / AL_LTC_SIZE;
-            form = len * real(textureLod(al_ltc_amplitude, vec2(suv), 0.0f).w);
-        }
+        form = al_ltc_proxy_form(vector_ff);
 #else
         // The closing arc on the horizon z = 0, as for the Lambert term: along +z, its
         // sine floored at 0.
@@ -254,42 +330,8 @@ vec4 al_shade(AlCase c) {
         }
         form = real(vector_ff.z) / AL_TWO_PI;
 #endif
-#ifdef AL_DIST_PHONG
-        real magnitude = amp.x;
-#else
-        // Fresnel (seed 001, last section): the table's split f0 A + B is the lobe's
-        // whole-hemisphere average of F. A light holding part of the lobe sees F near
-        // its own part's half vectors, so the (1 - h.v)^5 weight moves by its value at
-        // the light's direction in the lobe (the LTC's vector form factor taken back
-        // through M) less its value for a light filling the hemisphere, so that such a
-        // light stays exact. M = Minv^-1 up to scale: xz block
-        // [[1, -b], [-d, a]], y (a - b d) / c.
-        // Measured on seeded random sets (tests/test_ltc_shading.cpp): the correction
-        // helps GGX (relL2 with random f0 1.81x -> 0.97x that of a perfect Fresnel
-        // channel on the same fit) and hurts the Gaussian-tailed lobes, whose LTC
-        // direction is a poorer guide (beckmann 1.05x -> 1.52x, blinn 1.24x -> 1.52x):
-        // GGX only.
-        real f0 = real(c.params.w);
-        real magnitude = f0 * amp.x + amp.y;
-#ifdef AL_DIST_GGX
-        if (f0 < AL_R(1.0)) {
-            rvec3 g = rvec3(vector_ff);
-            rvec3 w = rvec3(g.x - m.y * g.z, g.y * (m.x - m.y * m.w) / m.z, m.x * g.z - m.w * g.x);
-            // The hemisphere's image in the LTC's space is the lune z > 0, (-d, 0, a).w > 0
-            // (M's third row): its vector form factor lies along the sum of the two unit
-            // normals, taken back through M the same way.
-            rvec3 h = rvec3(AL_R(0.0), AL_R(0.0), AL_R(1.0)) +
-                      normalize(rvec3(-m.w, AL_R(0.0), m.x));
-            rvec3 wh = rvec3(h.x - m.y * h.z, AL_R(0.0), m.x * h.z - m.w * h.x);
-            real sv = sqrt(max(AL_R(1.0) - nv * nv, AL_R(0.0)));
-            real x_light = al_ltc_schlick_weight(w, sv, nv);
-            real x_lobe = al_ltc_schlick_weight(wh, sv, nv);
-            if (x_light >= AL_R(0.0) && x_lobe >= AL_R(0.0))
-                magnitude += (AL_R(1.0) - f0) * (amp.x + amp.y) * (x_light - x_lobe);
-        }
-#endif
-#endif
-        specular = max(form, AL_R(0.0)) * magnitude;
+        specular = max(form, AL_R(0.0)) * al_ltc_magnitude(L, vector_ff, real(c.params.w));
     }
     return vec4(diffuse, specular, AL_R(0.0), AL_R(0.0));
 }
+#endif

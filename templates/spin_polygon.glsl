@@ -74,7 +74,7 @@ AlCase al_spin_polygon(AlCase c) {
     scale = AL_R(1.0) - m + m * sqrt(k_angle / al_sincos(k_angle).x);
 #endif
     // Clockwise in (a, b), so that (v1 - v0) x (v2 - v0) points along -W, towards p.
-    for (int i = 0; i < 8; ++i) {
+    for (int i = 0; i < AL_CASE_VERTS; ++i) {
         rvec2 sc = al_sincos(theta0 - real(i) * k_angle);
         c.verts[i] = i < k ? rvec4(scale * (sc.y * U + sc.x * V), AL_R(0.0)) : rvec4(AL_R(0.0));
     }

@@ -55,4 +55,17 @@ inline double rel_l2(const ResultSet& out, const std::map<std::string, CaseResul
     return std::sqrt(num / den);
 }
 
+// diffuse and specular of every result finite and >= 0 (CONTRACT.md 2), naming the
+// run (`label`) and the case on failure.
+inline void check_finite_non_negative(const ResultSet& out, const std::string& label) {
+    for (const auto& res : out.results) {
+        INFO(label << " " << res.id << ": diffuse " << *res.diffuse << ", specular "
+                   << *res.specular);
+        CHECK(std::isfinite(*res.diffuse));
+        CHECK(std::isfinite(*res.specular));
+        CHECK(*res.diffuse >= 0.0);
+        CHECK(*res.specular >= 0.0);
+    }
+}
+
 }  // namespace arealight::test

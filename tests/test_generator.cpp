@@ -127,7 +127,15 @@ TEST_CASE("a variant stitches the library types, common, its family's templates,
         REQUIRE(family);
         std::vector<std::string> want = {"templates/library_types.glsl", "templates/common.glsl"};
         for (const auto& t : family->templates) want.push_back("templates/" + t);
-        want.push_back("templates/library_polygon.glsl");
+        // The light's entry: a polygon's own; a curved light's ellipse, its proxy
+        // polygon (used by the polygon methods), then its own reduction.
+        if (v.light == LightType::Polygon) {
+            want.push_back("templates/library_polygon.glsl");
+        } else {
+            want.push_back("templates/ellipse_record.glsl");
+            want.push_back("templates/spin_polygon.glsl");
+            want.push_back(std::string("templates/library_") + to_string(v.light) + ".glsl");
+        }
         INFO(canonical_name(v));
         CHECK(variant_templates(v, Language::Cpp) == want);
         want.push_back("templates/kernel.glsl");

@@ -201,8 +201,11 @@ TEST_CASE("microfacet peak methods: finite and non-negative at the extremes",
           "[shading][vulkan][peakmf]") {
     // alpha 1e-3 and 1 (N 1 and 1e5), views from normal to grazing (n.v 1e-6) and from
     // below (n.v < 0: specular 0), lights tiny, along r, crossing the horizon and nearly
-    // filling the hemisphere; every listed variant of the families, both backends.
-    const CaseSet set = extreme_microfacet_polygons();
+    // filling the hemisphere; every listed variant of the families, both backends; the
+    // same for disks, spheres and ellipsoids of those places and sizes.
+    CaseSet set = extreme_microfacet_polygons();
+    const CaseSet curved = curved_cases_like(set, 29);
+    set.cases.insert(set.cases.end(), curved.cases.begin(), curved.cases.end());
     for (const auto& v : enumerate_variants()) {
         if (v.dist == Distribution::Phong || !is_peak_method(v.method)) continue;
         const std::string name = canonical_name(v);

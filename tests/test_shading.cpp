@@ -192,6 +192,8 @@ void check_variants_run(std::size_t half) {
             cases.cases.push_back(c);
         }
     }
+    const CaseSet curved = curved_cases_like(cases, 17);
+    cases.cases.insert(cases.cases.end(), curved.cases.begin(), curved.cases.end());
     const auto all = enumerate_variants();
     for (std::size_t i = 0; i < all.size(); ++i) {
         if ((i + i / 2) % 2 != half) continue;
@@ -314,6 +316,14 @@ TEST_CASE("peak-function and arvo methods: finite and non-negative at the extrem
     for (const PeakBar& bar : kPeakBars) names.push_back(bar.variant);
     names.push_back("dist=phong,method=lorentz,light=polygon,fit=paper,specular=sg");
     names.push_back("dist=phong,method=pearson,light=polygon,fit=paper,specular=sg");
+    // Disks, spheres and ellipsoids of the same places and sizes, for every listed
+    // curved-light variant of these methods.
+    const CaseSet curved = curved_cases_like(set, 19);
+    set.cases.insert(set.cases.end(), curved.cases.begin(), curved.cases.end());
+    for (const auto& v : enumerate_variants())
+        if (v.dist == Distribution::Phong && is_peak_method(v.method) &&
+            v.light != LightType::Polygon)
+            names.push_back(canonical_name(v));
     for (const std::string& name : names) {
         for (Backend b : {Backend::Cpu, Backend::Vulkan}) {
             for (const auto& res : run(b, name, set).results) {

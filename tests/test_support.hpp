@@ -1,6 +1,7 @@
 // Helpers shared by the tests: case construction, rigid motions, tolerances.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <glm/glm.hpp>
 #include <random>
@@ -65,6 +66,51 @@ inline Case transformed(const Case& c, const glm::dmat3& R, const glm::dvec3& t)
     o.light.v = D(c.light.v);
     for (auto& a : o.light.axes) a = D(a);
     return o;
+}
+
+// For each polygon case, a disk, a sphere and an ellipsoid light of about its size
+// and place (seeded): the disk in the polygon's plane, facing the same way, with
+// random orthogonal semi-axes of 0.4 to 1 times the polygon's radius; the sphere
+// and the ellipsoid centred there too, sized so that p stays outside.
+inline CaseSet curved_cases_like(const CaseSet& polygons, std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> U(0.0, 1.0);
+    CaseSet out;
+    for (const Case& c : polygons.cases) {
+        const auto& vs = c.light.vertices;
+        glm::dvec3 centre(0.0);
+        for (const auto& x : vs) centre += g(x);
+        centre /= static_cast<double>(vs.size());
+        double radius = 0.0;
+        for (const auto& x : vs) radius = std::max(radius, glm::length(g(x) - centre));
+        const glm::dvec3 normal =
+            glm::normalize(glm::cross(g(vs[1]) - g(vs[0]), g(vs[2]) - g(vs[0])));
+        glm::dvec3 t = glm::cross(normal, glm::dvec3(U(rng) - 0.5, U(rng) - 0.5, U(rng) - 0.5));
+        t = glm::normalize(t);
+        const glm::dvec3 b = glm::cross(normal, t);
+        const double ru = radius * (0.4 + 0.6 * U(rng)), rv = radius * (0.4 + 0.6 * U(rng));
+        const double dist = glm::length(centre - g(c.p));
+        Case disk = c;
+        disk.id += "-disk";
+        disk.light = Light{};
+        disk.light.type = LightType::Disk;
+        disk.light.center = a3(centre);
+        disk.light.u = a3(ru * t);
+        disk.light.v = a3(rv * b);
+        disk.light.two_sided = c.light.two_sided;
+        Case sphere = disk;
+        sphere.id = c.id + "-sphere";
+        sphere.light.type = LightType::Sphere;
+        sphere.light.radius = std::min(ru, 0.8 * dist);
+        Case ellipsoid = disk;
+        ellipsoid.id = c.id + "-ellipsoid";
+        ellipsoid.light.type = LightType::Ellipsoid;
+        const double scale = std::min(1.0, 0.8 * dist / std::max({ru, rv, radius}));
+        ellipsoid.light.axes = {a3(scale * ru * t), a3(scale * rv * b),
+                                a3(scale * radius * (0.2 + 0.8 * U(rng)) * normal)};
+        out.cases.insert(out.cases.end(), {disk, sphere, ellipsoid});
+    }
+    return out;
 }
 
 }  // namespace arealight::test

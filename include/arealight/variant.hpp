@@ -76,7 +76,7 @@ struct Variant {
     Factor factor = Factor::Blend;   // microfacet peak methods
     Horizon horizon = Horizon::Clip;  // method=ltc
     Edge edge = Edge::Acos;           // method=ltc
-    int proxy = 8;                    // curved lights, polygon methods: proxy polygon's size
+    int proxy = 16;                   // curved lights, polygon methods: proxy polygon's size
     Orient orient = Orient::Rim;      // curved lights, polygon methods: its orientation rule
 
     // Equal when every key of the key table has the same value (a field that no
