@@ -35,6 +35,7 @@ rvec3 al_crossing(rvec3 a, rvec3 b, real da, real db) {
     return normalize((da * b - db * a) / (da - db));
 }
 
+#if !defined(AL_METHOD_POINT) && !defined(AL_METHOD_LTC)
 // The arc xn -> en along n's circle (xn where the boundary leaves n's hemisphere, en
 // where it re-enters), clipped by the axis's hemisphere unless !clip_axis: its ends
 // a, b, whether any of it is left, and where it leaves (yo) or re-enters (yi) the
@@ -60,7 +61,7 @@ bool al_horizon_arc(rvec3 xn, rvec3 en, rvec3 axis, bool clip_axis, AL_INOUT(rve
 
 // (Curved lights shaded along their true boundary have no polygon: AL_MAX_VERTS
 // undefined, and ellipse_clip.glsl streams instead.)
-#if !defined(AL_METHOD_POINT) && !defined(AL_METHOD_LTC) && defined(AL_MAX_VERTS)
+#ifdef AL_MAX_VERTS
 // Streams the arcs of D = light ∩ {n.w >= 0} ∩ {axis.w >= 0} into the method's
 // accumulator M (al_moments_arc) and returns the irradiance / pi of light ∩ {n.w >= 0}
 // (Lambert: sum arc_i (n.m_i) / (2 pi), exact). Without clip_axis, D = light ∩
@@ -156,5 +157,6 @@ rvec2 al_polygon_moments(AlCase c, real side, rvec3 n, rvec3 axis, real N,
     diffuse = al_polygon_stream(c, side, n, axis, true, N, M);
     return al_moments_end(M, axis, n, N);
 }
+#endif
 #endif
 #endif

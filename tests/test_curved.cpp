@@ -132,7 +132,9 @@ double worst_difference(const ResultSet& a, const ResultSet& b, std::string& whe
 
 const char* kSameLightVariants[] = {"dist=phong,method=point,light=", "dist=ggx,method=point,light=",
                                     "dist=phong,method=pearson,light=",
-                                    "dist=ggx,method=pearson,light="};
+                                    "dist=ggx,method=pearson,light=",
+                                    "dist=phong,method=exact,light=",
+                                    "dist=ggx,method=exact,light="};
 
 }  // namespace
 
@@ -241,8 +243,10 @@ TEST_CASE("curved lights: zero inside, on the plane and behind; two-sided disks 
         }
     }
     for (Backend b : kBackends) {
-        for (const char* family : {"dist=phong,method=point,light=", "dist=phong,method=pearson,light=",
-                                   "dist=ggx,method=pearson,light=", "dist=ggx,method=ltc,light="}) {
+        for (const char* family :
+             {"dist=phong,method=point,light=", "dist=phong,method=pearson,light=",
+              "dist=ggx,method=pearson,light=", "dist=ggx,method=ltc,light=",
+              "dist=phong,method=exact,light=", "dist=ggx,method=exact,light="}) {
             for (LightType t : {LightType::Disk, LightType::Sphere, LightType::Ellipsoid}) {
                 const ResultSet out = run(b, std::string(family) + to_string(t), zero);
                 for (const auto& r : out.results) {
@@ -256,9 +260,9 @@ TEST_CASE("curved lights: zero inside, on the plane and behind; two-sided disks 
             const ResultSet k = run(b, std::string(family) + "disk", back);
             std::string where;
             const double worst = worst_difference(f, k, where);
-            const double tol = std::string(family).find("point") != std::string::npos
-                                   ? kSameLightTol
-                                   : kMirrorProxyTol;
+            const bool symmetric = std::string(family).find("point") != std::string::npos ||
+                                   std::string(family).find("exact") != std::string::npos;
+            const double tol = symmetric ? kSameLightTol : kMirrorProxyTol;
             INFO(family << "disk on " << to_string(b) << ": two-sided front against back, worst "
                         << worst << " at " << where);
             CHECK(worst <= tol);

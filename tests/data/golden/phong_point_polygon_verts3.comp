@@ -348,6 +348,32 @@ al_polygon_phong_rvec3 al_polygon_phong_crossing(al_polygon_phong_rvec3 a, al_po
 }
 
 #if !defined(AL_POLYGON_PHONG_METHOD_POINT) && !defined(AL_POLYGON_PHONG_METHOD_LTC)
+// The arc xn -> en along n's circle (xn where the boundary leaves n's hemisphere, en
+// where it re-enters), clipped by the axis's hemisphere unless !clip_axis: its ends
+// a, b, whether any of it is left, and where it leaves (yo) or re-enters (yi) the
+// axis's hemisphere, if it does.
+bool al_polygon_phong_horizon_arc(al_polygon_phong_rvec3 xn, al_polygon_phong_rvec3 en, al_polygon_phong_rvec3 axis, bool clip_axis, AL_POLYGON_PHONG_INOUT(al_polygon_phong_rvec3) a,
+                    AL_POLYGON_PHONG_INOUT(al_polygon_phong_rvec3) b, AL_POLYGON_PHONG_INOUT(al_polygon_phong_rvec3) yo, AL_POLYGON_PHONG_INOUT(bool) has_yo,
+                    AL_POLYGON_PHONG_INOUT(al_polygon_phong_rvec3) yi, AL_POLYGON_PHONG_INOUT(bool) has_yi) {
+    al_polygon_phong_real rx = dot(axis, xn), re = dot(axis, en);
+    bool jx = !clip_axis || rx >= 0.0f, je = !clip_axis || re >= 0.0f;
+    al_polygon_phong_rvec3 q = jx != je ? al_polygon_phong_crossing(xn, en, rx, re) : xn;
+    if (jx && !je) {
+        yo = q;
+        has_yo = true;
+    }
+    if (!jx && je) {
+        yi = q;
+        has_yi = true;
+    }
+    a = jx ? xn : q;
+    b = je ? en : q;
+    return jx || je;
+}
+
+// (Curved lights shaded along their true boundary have no polygon: AL_MAX_VERTS
+// undefined, and ellipse_clip.glsl streams instead.)
+#ifdef AL_POLYGON_PHONG_MAX_VERTS
 // Streams the arcs of D = light ∩ {n.w >= 0} ∩ {axis.w >= 0} into the method's
 // accumulator M (al_moments_arc) and returns the irradiance / pi of light ∩ {n.w >= 0}
 // (Lambert: sum arc_i (n.m_i) / (2 pi), exact). Without clip_axis, D = light ∩
@@ -421,20 +447,7 @@ al_polygon_phong_real al_polygon_phong_polygon_stream(AlPolygonPhongCase c, al_p
             m = n;
             if (has_xn && has_en) {
                 lit_sum += al_polygon_phong_arc(xn, en, n);
-                al_polygon_phong_real rx = dot(axis, xn), re = dot(axis, en);
-                bool jx = !clip_axis || rx >= 0.0f, je = !clip_axis || re >= 0.0f;
-                al_polygon_phong_rvec3 q = jx != je ? al_polygon_phong_crossing(xn, en, rx, re) : xn;
-                if (jx && !je) {
-                    yo = q;
-                    has_yo = true;
-                }
-                if (!jx && je) {
-                    yi = q;
-                    has_yi = true;
-                }
-                d_arc = jx || je;
-                a = jx ? xn : q;
-                b = je ? en : q;
+                d_arc = al_polygon_phong_horizon_arc(xn, en, axis, clip_axis, a, b, yo, has_yo, yi, has_yi);
             }
         } else {
             // Along the axis's circle (normal axis), from D's exit to its entry.
@@ -458,7 +471,8 @@ al_polygon_phong_rvec2 al_polygon_phong_polygon_moments(AlPolygonPhongCase c, al
 }
 #endif
 #endif
-#line 462 "arealight-generated"
+#endif
+#line 476 "arealight-generated"
 #line 1 "templates/light_polygon.glsl"
 // Shading of polygon lights (CONTRACT.md 2) by each method: the point-light
 // baseline, or clipping (polygon.glsl) and the method's boundary moments.
@@ -584,7 +598,7 @@ vec4 al_polygon_phong_shade(AlPolygonPhongCase c) {
     return vec4(diffuse, specular, sm.y, 0.0f);
 }
 #endif
-#line 588 "arealight-generated"
+#line 602 "arealight-generated"
 #line 1 "templates/library_polygon.glsl"
 // The library entry for polygon lights (CONTRACT.md 5): the renderer's fp32 values,
 // in any consistent space, turned into the record the methods work on, in the
@@ -636,7 +650,7 @@ AlPolygonPhongCase al_polygon_phong_polygon_record(ArealightSurface s, vec3 vert
 vec4 al_polygon_phong_polygon_evaluate(ArealightSurface s, vec3 vertices[8], int count, bool two_sided) {
     return al_polygon_phong_clean(al_polygon_phong_shade(al_polygon_phong_polygon_record(s, vertices, count, two_sided)));
 }
-#line 640 "arealight-generated"
+#line 654 "arealight-generated"
 // arealight_polygon_phong: variant dist=phong,method=point,light=polygon,verts=3.
 // Domain: p, n, v, the light in one space, fp32 (n, v any length); convex planar polygon, counter-clockwise seen from its emitting side, count in [3, AL_MAX_VERTS] (more are cut to the first AL_MAX_VERTS); s.param the exponent N in [1, 1e5]; s.f0 in [0, 1] (ignored).
 // Returns diffuse and specular of CONTRACT.md 2 for unit radiance: finite, >= 0.
@@ -700,4 +714,4 @@ void main() {
 #endif
     al_results[i] = result;
 }
-#line 704 "arealight-generated"
+#line 718 "arealight-generated"
