@@ -30,7 +30,9 @@ def get(name, key):
     x = q.get(name)
     return x.get(key) if isinstance(x, dict) and x.get(key) is not None else float("nan")
 second = "moment" if "moment" in q else "ndf"
-bad = sum(int(x["bad"]) + int(x["missing"]) for x in q.values())
+# Missing counts only for the two quantities every variant returns (point and ltc have no
+# moment or ndf).
+bad = sum(int(x["bad"]) for x in q.values()) + sum(int(q[k]["missing"]) for k in ("diffuse", "specular"))
 print(get("specular", "relL2"), get(second, "relL2"), get("specular", "p95"), get("specular", "max"),
       max(get(second, "p95"), get("diffuse", "p95")), max(get(second, "max"), get("diffuse", "max")), bad)
 EOF
