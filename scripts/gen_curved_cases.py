@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
-"""Seeded curved-light cases (arealight-cases/1) that stress the exact methods.
+"""Seeded hard light cases (arealight-cases/1) that stress the exact and peak methods.
 
-Usage: gen_curved_cases.py COUNT SEED OUT.json [--kind hard|near]
+Usage: gen_curved_cases.py COUNT SEED OUT.json [--kind hard|near|aimed] [--lights L,...]
 
---kind hard (default): disks, spheres and ellipsoids (in turn) for phong, blinn,
+--kind hard (default): the lights of --lights (default disk,sphere,ellipsoid; also
+polygon: convex 3- to 8-gons facing p, jittered vertices) in turn, for phong, blinn,
 beckmann and ggx (in turn), each in one of
   horizon  the light's centre within its own angular size of n's horizon
   large    p close to the light: distance 1.01 to 2.5 times its size
@@ -15,6 +16,12 @@ third of the disks two-sided; N log-uniform in [1, 1e5], alpha in [1e-3, 1].
 boundary: beside the rim of an elliptic disk (semi-axes 1, 0.4; above its plane
 or in it), near the disk's plane outside its rim, outside a unit sphere and an
 ellipsoid (semi-axes 1.5, 0.5, 0.8) by a factor 1 + eps; materials as above.
+
+--kind aimed: Phong polygons (3- to 8-gons, sizes 0.1 to 2 at 1.1 to 10 times their
+size) whose centre lies within 0.8 of its angular size of n's horizon, r aimed at a
+point of the light or its edge (up to 0.2 rad off), N log-uniform in [1, 200]: the
+low-N lobes that see a light near the horizon, where the specular moment is a small
+difference of boundary terms.
 
 The same COUNT, SEED and kind give the same file (near: COUNT is ignored, 96
 cases). The oracle: arealight reference --cases OUT.json --out REF.json.
@@ -80,7 +87,20 @@ def hard_case(g, index, dist, ltype):
             if dot(dirc, n) > 0.05:
                 break
     c = add(p, dirc, d)
-    if ltype == "disk":
+    if ltype == "polygon":
+        b, w = g.frame(unit(add(c, p, -1)))
+        k = rng.randint(3, 8)
+        ang = sorted(2 * math.pi * (j + rng.uniform(0, 0.7)) / k for j in range(k))
+        wide = 10 ** rng.uniform(-1, 0)
+        # Counter-clockwise seen from p (the contract's front face): b, w, p - c right-handed.
+        verts = [add(add(c, b, size * math.cos(t)), w, -size * wide * math.sin(t)) for t in ang]
+        light = {"type": "polygon", "vertices": verts, "two_sided": rng.random() < 0.3}
+
+        def rim(th):
+            j = int(th / (2 * math.pi) * k) % k
+            t = rng.random()
+            return add(scale(verts[j], 1 - t), verts[(j + 1) % k], t)
+    elif ltype == "disk":
         a = g.rand_unit()
         b, w = g.frame(a)
         u, vv = scale(b, size), scale(w, size * 10 ** rng.uniform(-1, 0))
@@ -134,14 +154,49 @@ def hard_case(g, index, dist, ltype):
             "light": light, "material": g.material(dist)}
 
 
-def hard_cases(count, seed):
+def hard_cases(count, seed, lights):
     g, cases, i = Gen(seed), [], 0
     dists = ["phong", "blinn", "beckmann", "ggx"]
     while len(cases) < count:
         i += 1
-        c = hard_case(g, len(cases), dists[i % 4], ["disk", "sphere", "ellipsoid"][(i // 4) % 3])
+        c = hard_case(g, len(cases), dists[i % 4], lights[(i // 4) % len(lights)])
         if c:
             cases.append(c)
+    return cases
+
+
+def aimed_cases(count, seed):
+    g = Gen(seed)
+    rng = g.rng
+    cases = []
+    for i in range(count):
+        n = g.rand_unit()
+        e1, e2 = g.frame(n)
+        size = 10 ** rng.uniform(-1, 0.3)
+        d = size * 10 ** rng.uniform(0.05, 1)
+        ang = rng.uniform(-0.8, 0.8) * size / d
+        az = rng.uniform(0, 2 * math.pi)
+        h = add(scale(e1, math.cos(az)), e2, math.sin(az))
+        c = scale(unit(add(scale(h, math.cos(ang)), n, math.sin(ang))), d)
+        b, w = g.frame(unit(c))
+        k = rng.randint(3, 8)
+        angs = sorted(2 * math.pi * (j + rng.uniform(0, 0.7)) / k for j in range(k))
+        wide = 10 ** rng.uniform(-0.7, 0)
+        verts = [add(add(c, b, size * math.cos(t)), w, -size * wide * math.sin(t)) for t in angs]
+        j, t = rng.randrange(k), rng.random()
+        q = add(scale(verts[j], 1 - t), verts[(j + 1) % k], t)
+        if rng.random() < 0.5:
+            q = add(scale(q, 0.7), c, 0.3)
+        tdir = unit(add(unit(q), g.rand_unit(), rng.uniform(0, 0.2)))
+        if dot(tdir, n) < 0.01:
+            tdir = unit(add(tdir, n, 0.02 - dot(tdir, n)))
+        v = add(scale(n, 2 * dot(n, tdir)), tdir, -1)
+        N = 10 ** rng.uniform(0, 2.3)
+        if dot(v, n) <= 1e-3:
+            continue
+        cases.append({"id": "aimed-%04d" % i, "p": [0, 0, 0], "n": n, "v": unit(v),
+                      "light": {"type": "polygon", "vertices": verts, "two_sided": False},
+                      "material": {"distribution": "phong", "exponent": N}})
     return cases
 
 
@@ -183,9 +238,20 @@ def main():
     ap.add_argument("count", type=int)
     ap.add_argument("seed", type=int)
     ap.add_argument("out")
-    ap.add_argument("--kind", choices=["hard", "near"], default="hard")
+    ap.add_argument("--kind", choices=["hard", "near", "aimed"], default="hard")
+    ap.add_argument("--lights", default="disk,sphere,ellipsoid",
+                    help="comma-separated light types of --kind hard (polygon, disk, sphere, ellipsoid)")
     a = ap.parse_args()
-    cases = hard_cases(a.count, a.seed) if a.kind == "hard" else near_cases(a.seed)
+    lights = a.lights.split(",")
+    bad = [t for t in lights if t not in ("polygon", "disk", "sphere", "ellipsoid")]
+    if bad:
+        ap.error("unknown light type %s in --lights" % ", ".join(bad))
+    if a.kind == "hard":
+        cases = hard_cases(a.count, a.seed, lights)
+    elif a.kind == "aimed":
+        cases = aimed_cases(a.count, a.seed)
+    else:
+        cases = near_cases(a.seed)
     with open(a.out, "w") as f:
         json.dump({"format": "arealight-cases/1", "cases": cases}, f, indent=1)
         f.write("\n")

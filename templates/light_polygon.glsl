@@ -3,8 +3,8 @@
 
 #ifdef AL_METHOD_POINT
 // Baseline: the polygon's centre as a point light of the same power, solid angle
-// ~ area cos(theta_l) / d^2. Error grows with the light's angular size; O(1), cheapest.
-// Returns (diffuse, specular, 0, 0) (CONTRACT.md 2; no ndf or moment).
+// ~ area cos(theta_l) / d^2 (point_light.glsl). Error grows with the light's angular
+// size; O(1), cheapest.
 vec4 al_shade(AlCase c) {
     rvec3 n = rvec3(c.n);
     real side = al_polygon_side(c);
@@ -20,15 +20,7 @@ vec4 al_shade(AlCase c) {
     real d2 = dot(centre, centre);
     rvec3 w = centre * inversesqrt(d2);
     real solid_angle = abs(dot(area2, w)) * AL_R(0.5) / d2;
-    real nw = max(dot(n, w), AL_R(0.0));
-#ifdef AL_DIST_PHONG
-    real N = real(c.params.x);
-    real spec = al_phong_brdf(rvec3(c.r), w, N) * nw * solid_angle;
-#else
-    real spec = al_microfacet_brdf_cos(n, rvec3(c.v), w, real(c.params.x), real(c.params.w)) *
-                solid_angle;
-#endif
-    return vec4(nw / AL_PI * solid_angle, spec, AL_R(0.0), AL_R(0.0));
+    return al_point_light(c, n, w, solid_angle);
 }
 #endif
 

@@ -32,42 +32,11 @@
 // Curved lights (disk, sphere, ellipsoid): al_lobe_conic below integrates the parts
 // of their curved boundary with the same forms (ellipse_clip.glsl, light_ellipse.glsl).
 
-// Per-arc sums for the arc a -> b with inward unit normal m (phong_edge.glsl).
+// Per-arc sums for the arc a -> b with inward unit normal m (phong_edge.glsl), by
+// the rule of phong_edge_rule.glsl.
 AlLobeEdge al_lobe_edge(rvec3 a, rvec3 b, rvec3 m, rvec3 r, rvec3 n, real N) {
     AlEdgeFrame E = al_edge_frame(a, b, m, r, N, AL_R(-6.9));  // x^(N+1) >= 1e-3
-    real s = E.s;
-    real sigma = sqrt(s * s + AL_R(4.0) / N);
-    // xi = atan(tan(tau) / sigma) at the ends, straight from the components.
-    real xa = al_atan2(E.ag, sigma * E.af);
-    real xb = al_atan2(E.bg, sigma * E.bf);
-    real half_width = AL_R(0.5) * (xb - xa), mid = AL_R(0.5) * (xa + xb);
-    bool far_edge = E.far_edge;
-    real k1 = N + AL_R(1.0);
-    rvec3 acc = rvec3(AL_R(0.0));
-    for (int j = 0; j < AL_NODES; ++j) {
-        rvec2 sc = al_sincos(mid + half_width * AL_GL_X[j]);
-        real s2 = sc.x * sc.x, c2 = sc.y * sc.y;
-        real q2 = c2 + sigma * sigma * s2;
-        real dtau = AL_GL_W[j] * sigma / q2;
-        // 1 - x^2 at this node, and log x.
-        real y = (sigma * sigma * s2 + s * s * c2) / q2;
-        real lx = y < AL_R(1.0) ? AL_R(0.5) * al_log1p(-y) : AL_R(-1.0e30);
-        real xn = al_exp(N * lx);
-        if (far_edge) {
-            acc += dtau * rvec3(xn * al_exp(lx) / y, xn / y, xn);
-        } else {
-            // (1 - x^k) / (1 - x^2) -> k / 2 as x -> 1.
-            real g1 = y > AL_R(1e-30) ? -al_expm1(k1 * lx) / y : AL_R(0.5) * k1;
-            real g0 = y > AL_R(1e-30) ? -al_expm1(N * lx) / y : AL_R(0.5) * N;
-            acc += dtau * rvec3(g1, g0, xn);
-        }
-    }
-    acc *= half_width;
-    AlLobeEdge e;
-    e.near_edge = !far_edge;
-    real sgn = far_edge ? AL_R(1.0) : AL_R(-1.0);
-    e.sums = rvec3(sgn * E.rm * acc.x, sgn * E.rm * acc.y, dot(n, m) * acc.z);
-    return e;
+    return al_lobe_sums(E, al_lobe_rule(E, N, false), n, m);
 }
 
 #ifdef AL_LIGHT_CURVED

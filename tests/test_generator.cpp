@@ -109,7 +109,8 @@ TEST_CASE("a variant stitches the library types, common, its family's templates,
     CHECK(exact == std::vector<std::string>{
                        "templates/library_types.glsl", "templates/common.glsl",
                        "templates/dist_phong.glsl", "templates/phong_edge.glsl",
-                       "templates/method_exact_phong.glsl", "templates/phong_boundary.glsl",
+                       "templates/phong_edge_rule.glsl", "templates/method_exact_phong.glsl",
+                       "templates/phong_boundary.glsl",
                        "templates/polygon.glsl", "templates/light_polygon.glsl",
                        "templates/library_polygon.glsl", "templates/kernel.glsl"});
     CHECK(variant_templates(parse("dist=phong,method=arvo,light=polygon,verts=3"), Language::Cpp) ==
@@ -119,7 +120,7 @@ TEST_CASE("a variant stitches the library types, common, its family's templates,
                                    "templates/light_polygon.glsl",
                                    "templates/library_polygon.glsl"});
     CHECK(variant_templates(parse("dist=phong,method=pearson,light=polygon,fit=paper"),
-                            Language::Glsl)[4] == "templates/method_peak_phong.glsl");
+                            Language::Glsl)[6] == "templates/method_peak_phong.glsl");
 
     // Every family's templates exist, in its row's order, for both languages.
     for (const auto& v : enumerate_variants()) {

@@ -18,12 +18,8 @@ using namespace arealight::test;
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-// The acceptance bar of the exact variant (issue 4): p95 and max of the relative
-// error against the oracle (floor 1e-3). The fp64 default must meet it; what is left
-// is the fp32 rounding of the uploaded case (measured on these cases: p95 3.7e-7,
-// max 5.2e-6).
-constexpr double kExactP95Tol = 1e-5;
-constexpr double kExactMaxTol = 1e-4;
+// The exact variant's bar is kExactP95Tol / kExactMaxTol (test_support.hpp); the fp64
+// default meets it (measured on these cases: p95 3.7e-7, max 5.2e-6).
 // precision=fp32: the O(1) boundary terms of a small result cancel in fp32 (measured
 // on these cases: p95 3.6e-6, max 4.5e-5); its bar is the max alone.
 constexpr double kExactFp32MaxTol = 1e-4;
@@ -66,6 +62,46 @@ CaseSet random_phong_polygons(std::uint64_t seed, int count) {
         // A random rigid motion: nothing may depend on the frame.
         set.cases.push_back(transformed(
             c, random_rotation(rng), glm::dvec3(U(rng) - 0.5, U(rng) - 0.5, U(rng) - 0.5) * 10.0));
+    }
+    return set;
+}
+
+// Polygons near n's horizon (the centre within 0.8 of the light's angular radius of
+// it), r aimed at a point of the light or of its edge (up to 0.2 rad off), N
+// log-uniform in [1, 200]: low-N lobes where the specular moment is a small
+// difference of O(1) boundary terms (scripts/gen_curved_cases.py --kind aimed).
+CaseSet aimed_horizon_polygons(std::uint64_t seed, int count) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> U(0, 1);
+    CaseSet set;
+    const glm::dvec3 n(0, 0, 1);
+    while (static_cast<int>(set.cases.size()) < count) {
+        const double size = std::pow(10.0, -1 + 1.3 * U(rng));
+        const double d = size * std::pow(10.0, 0.05 + 0.95 * U(rng));
+        const double elevation = (1.6 * U(rng) - 0.8) * size / d, az = 2 * kPi * U(rng);
+        const glm::dvec3 dir(std::cos(elevation) * std::cos(az),
+                             std::cos(elevation) * std::sin(az), std::sin(elevation));
+        const glm::dvec3 t1 = glm::normalize(glm::cross(dir, glm::dvec3(U(rng) - 0.5, 0.5, 0.8)));
+        const glm::dvec3 t2 = glm::cross(dir, t1);
+        const int k = 3 + static_cast<int>(U(rng) * 6);
+        const double wide = std::pow(10.0, -0.7 * U(rng));
+        std::vector<glm::dvec3> verts;
+        for (int j = 0; j < k; ++j) {
+            const double a = -2 * kPi * (j + 0.7 * U(rng)) / k;  // clockwise about dir
+            verts.push_back(d * dir + size * (std::cos(a) * t1 + wide * std::sin(a) * t2));
+        }
+        const int j = static_cast<int>(U(rng) * k) % k;
+        const double t = U(rng);
+        glm::dvec3 q = (1 - t) * verts[j] + t * verts[(j + 1) % k];
+        if (U(rng) < 0.5) q = 0.7 * q + 0.3 * d * dir;
+        const glm::dvec3 jitter(U(rng) - 0.5, U(rng) - 0.5, U(rng) - 0.5);
+        glm::dvec3 r = glm::normalize(glm::normalize(q) + 0.4 * U(rng) * jitter);
+        if (r.z < 0.01) r = glm::normalize(r + (0.02 - r.z) * n);
+        const glm::dvec3 v = 2 * r.z * n - r;
+        const double N = std::pow(10.0, 2.3 * U(rng));
+        if (v.z <= 1e-3) continue;
+        set.cases.push_back(polygon_case("aimed-" + std::to_string(set.cases.size()), verts, n,
+                                         glm::normalize(v), Distribution::Phong, N, false));
     }
     return set;
 }
@@ -286,6 +322,38 @@ TEST_CASE("peak-function methods: bounded error on random polygons, backends agr
         }
         INFO(name << ": worst CPU/GPU relative difference " << worst);
         CHECK(worst <= kPeakBackendTol);
+    }
+}
+
+// The tuned peak methods near the horizon at low N (peak_lobe_edge.glsl: the Gauss
+// rule below N = 32 and for every arc's z integral). Bars on the relL2 of specular
+// and moment: about 1.5x the worst of the two backends and quantities on these
+// cases (lorentz specular 3.4e-3, moment 5.6e-3; pearson 1.3e-3, 2.3e-3; ellipsoid
+// 1.3e-3, 2.2e-3). The fits alone measured specular 2.4e-2 (lorentz) and 1.4e-2
+// (ellipsoid) on 1500 such cases (scripts/gen_curved_cases.py --kind aimed).
+constexpr double kPeakAimedLorentzTol = 8.5e-3;
+constexpr double kPeakAimedTol = 3.5e-3;
+
+TEST_CASE("peak-function methods: low-N lobes on lights near the horizon", "[shading][vulkan]") {
+    const CaseSet cases = aimed_horizon_polygons(977, 150);
+    std::map<std::string, CaseResult> ref;
+    for (const auto& c : cases.cases) ref[c.id] = reference_case(c, {});
+    const std::pair<const char*, double> bars[] = {
+        {"dist=phong,method=lorentz,light=polygon", kPeakAimedLorentzTol},
+        {"dist=phong,method=pearson,light=polygon", kPeakAimedTol},
+        {"dist=phong,method=ellipsoid,light=polygon", kPeakAimedTol},
+    };
+    for (const auto& [name, tol] : bars) {
+        for (Backend b : {Backend::Cpu, Backend::Vulkan}) {
+            const ResultSet out = run(b, name, cases);
+            REQUIRE(out.results.size() == cases.cases.size());
+            const double moment = rel_l2(out, ref, &CaseResult::moment);
+            const double specular = rel_l2(out, ref, &CaseResult::specular);
+            INFO(name << " on " << to_string(b) << ": relL2 specular " << specular << ", moment "
+                      << moment);
+            CHECK(specular <= tol);
+            CHECK(moment <= tol);
+        }
     }
 }
 
