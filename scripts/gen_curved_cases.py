@@ -64,6 +64,16 @@ class Gen:
         x = unit(cross(z, self.rand_unit()))
         return x, cross(z, x)
 
+    def polygon_facing(self, p, c, size, min_decade):
+        """A convex 3- to 8-gon about c facing p, jittered vertices, half-widths size and
+        size * 10^u, u in [min_decade, 0]; counter-clockwise seen from p (the contract's
+        front face: b, w, p - c right-handed)."""
+        b, w = self.frame(unit(add(c, p, -1)))
+        k = self.rng.randint(3, 8)
+        ang = sorted(2 * math.pi * (j + self.rng.uniform(0, 0.7)) / k for j in range(k))
+        wide = 10 ** self.rng.uniform(min_decade, 0)
+        return [add(add(c, b, size * math.cos(t)), w, -size * wide * math.sin(t)) for t in ang]
+
     def material(self, dist):
         if dist in ("phong", "blinn"):
             return {"distribution": dist, "exponent": 10 ** self.rng.uniform(0, 5)}
@@ -88,12 +98,8 @@ def hard_case(g, index, dist, ltype):
                 break
     c = add(p, dirc, d)
     if ltype == "polygon":
-        b, w = g.frame(unit(add(c, p, -1)))
-        k = rng.randint(3, 8)
-        ang = sorted(2 * math.pi * (j + rng.uniform(0, 0.7)) / k for j in range(k))
-        wide = 10 ** rng.uniform(-1, 0)
-        # Counter-clockwise seen from p (the contract's front face): b, w, p - c right-handed.
-        verts = [add(add(c, b, size * math.cos(t)), w, -size * wide * math.sin(t)) for t in ang]
+        verts = g.polygon_facing(p, c, size, -1)
+        k = len(verts)
         light = {"type": "polygon", "vertices": verts, "two_sided": rng.random() < 0.3}
 
         def rim(th):
@@ -178,11 +184,8 @@ def aimed_cases(count, seed):
         az = rng.uniform(0, 2 * math.pi)
         h = add(scale(e1, math.cos(az)), e2, math.sin(az))
         c = scale(unit(add(scale(h, math.cos(ang)), n, math.sin(ang))), d)
-        b, w = g.frame(unit(c))
-        k = rng.randint(3, 8)
-        angs = sorted(2 * math.pi * (j + rng.uniform(0, 0.7)) / k for j in range(k))
-        wide = 10 ** rng.uniform(-0.7, 0)
-        verts = [add(add(c, b, size * math.cos(t)), w, -size * wide * math.sin(t)) for t in angs]
+        verts = g.polygon_facing([0, 0, 0], c, size, -0.7)
+        k = len(verts)
         j, t = rng.randrange(k), rng.random()
         q = add(scale(verts[j], 1 - t), verts[(j + 1) % k], t)
         if rng.random() < 0.5:
