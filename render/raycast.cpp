@@ -74,8 +74,8 @@ double hit_box(const Ray& r, const Vec3& lo, const Vec3& hi, Vec3& n) {
 }
 
 // A convex polygon light, seen from its emitting side (either side when two-sided).
-double hit_light(const Ray& r, const Light& L) {
-    if (L.type != LightType::Polygon || L.vertices.size() < 3) return kInf;
+double hit_polygon(const Ray& r, const Light& L) {
+    if (L.vertices.size() < 3) return kInf;
     const auto& V = L.vertices;
     const Vec3 front = cross(sub(V[1], V[0]), sub(V[2], V[0]));
     const double dn = dot(r.d, front);
@@ -89,6 +89,57 @@ double hit_light(const Ray& r, const Light& L) {
         if (dot(cross(sub(b, a), sub(x, a)), front) < 0) return kInf;
     }
     return t;
+}
+
+// A disk light (CONTRACT 1: orthogonal semi-axes u, v, emitting towards u x v): the
+// plane's hit, inside when its coordinates along u and v lie in the unit disc.
+double hit_disk(const Ray& r, const Light& L) {
+    const Vec3 front = cross(L.u, L.v);
+    const double dn = dot(r.d, front);
+    if (dn == 0 || (!L.two_sided && dn > 0)) return kInf;
+    const double t = dot(sub(L.center, r.o), front) / dn;
+    if (!(t > kMinT)) return kInf;
+    const Vec3 x = sub(add(r.o, mul(r.d, t)), L.center);
+    const double a = dot(x, L.u) / dot(L.u, L.u), b = dot(x, L.v) / dot(L.v, L.v);
+    return a * a + b * b <= 1 ? t : kInf;
+}
+
+// An ellipsoid light, c + A y over the unit sphere (A's columns the orthogonal axes):
+// the ray carried by A^-1 is a ray with the same parameter t, met by the unit sphere.
+double hit_ellipsoid(const Ray& r, const Light& L) {
+    Vec3 o{}, d{};
+    for (int k = 0; k < 3; ++k) {
+        const Vec3& a = L.axes[k];
+        const double aa = dot(a, a);
+        if (!(aa > 0)) return kInf;
+        o[k] = dot(sub(r.o, L.center), a) / aa;
+        d[k] = dot(r.d, a) / aa;
+    }
+    // |o + t d|^2 = 1; the near root unless the eye is inside.
+    const double A = dot(d, d), B = dot(o, d), C = dot(o, o) - 1;
+    const double disc = B * B - A * C;
+    if (!(A > 0) || disc < 0) return kInf;
+    const double s = std::sqrt(disc);
+    // Roots (-B -+ s) / A, the near one in the cancellation-free form C / (-B + s).
+    double t = B < 0 ? C / (-B + s) : (-B - s) / A;
+    if (!(t > kMinT)) t = (-B + s) / A;
+    return t > kMinT ? t : kInf;
+}
+
+double hit_light(const Ray& r, const Light& L) {
+    switch (L.type) {
+        case LightType::Polygon:
+            return hit_polygon(r, L);
+        case LightType::Disk:
+            return hit_disk(r, L);
+        case LightType::Sphere: {
+            Vec3 n{};
+            return hit_sphere(r, L.center, L.radius, n);
+        }
+        case LightType::Ellipsoid:
+            return hit_ellipsoid(r, L);
+    }
+    return kInf;
 }
 
 double hit_object(const Ray& r, const SceneObject& o, Vec3& n) {
