@@ -83,6 +83,8 @@ def proxy(case, k):
     if e is None:
         return None
     C, U, V = e
+    if dot(cross(U, V), C) < 0:  # ellipse_record.glsl: W = unit(U x V) points away from p
+        V = mul(-1.0, V)
     UxV = cross(U, V)
     area = norm(UxV)
     W = mul(1.0 / area, UxV)
