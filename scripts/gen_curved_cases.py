@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Seeded hard light cases (arealight-cases/1) that stress the exact and peak methods.
 
-Usage: gen_curved_cases.py COUNT SEED OUT.json [--kind hard|near|aimed] [--lights L,...]
+Usage: gen_curved_cases.py COUNT SEED OUT.json [--kind hard|near|aimed|extreme] [--lights L,...]
 
 --kind hard (default): the lights of --lights (default disk,sphere,ellipsoid; also
 polygon: convex 3- to 8-gons facing p, jittered vertices) in turn, for phong, blinn,
@@ -22,6 +22,13 @@ size) whose centre lies within 0.8 of its angular size of n's horizon, r aimed a
 point of the light or its edge (up to 0.2 rad off), N log-uniform in [1, 200]: the
 low-N lobes that see a light near the horizon, where the specular moment is a small
 difference of boundary terms.
+
+--kind extreme: disks, spheres and ellipsoids at the ends of every range, for the
+no-NaN/Inf/negative guarantee and the fp32 input conditioning: coordinates of scale
+1e-6 to 1e6, lights 1e-6 to 10 times that scale, p from touching the light (its
+distance 1 + 1e-7 sizes) to 1e3 sizes away, disks seen edge-on, ellipsoids and
+disks flattened to 1e-6, n.v from exactly 0 through 1e-7 to 1, all four
+distributions (materials as above, half the microfacet ones with an f0).
 
 The same COUNT, SEED and kind give the same file (near: COUNT is ignored, 96
 cases). The oracle: arealight reference --cases OUT.json --out REF.json.
@@ -203,6 +210,44 @@ def aimed_cases(count, seed):
     return cases
 
 
+def extreme_cases(count, seed):
+    g = Gen(seed)
+    rng = g.rng
+    cases = []
+    for i in range(count):
+        span = 10 ** rng.uniform(-6, 6)
+        p = [rng.uniform(-1, 1) * span for _ in range(3)]
+        n = g.rand_unit()
+        t, _ = g.frame(n)
+        mode = rng.random()
+        cv = 0.0 if mode < 0.1 else 10 ** rng.uniform(-7, -3) if mode < 0.2 else rng.uniform(0, 1)
+        v = add(scale(n, cv), t, math.sqrt(1 - cv * cv))
+        size = span * 10 ** rng.uniform(-6, 1)
+        toward = g.rand_unit() if rng.random() < 0.5 else unit(add(scale(n, rng.uniform(-0.1, 1)), g.rand_unit(), 0.3))
+        c = add(p, toward, size * (1 + 10 ** rng.uniform(-7, 3)))
+        ltype = ("disk", "sphere", "ellipsoid")[i % 3]
+        if ltype == "disk":
+            # Facing p, or containing the line to p (edge-on) one time in five.
+            a, b = g.frame(toward)
+            if rng.random() < 0.2:
+                a, b = toward, a
+            light = {"type": "disk", "center": c, "u": scale(a, size),
+                     "v": scale(b, size * 10 ** rng.uniform(-6, 0)), "two_sided": rng.random() < 0.5}
+        elif ltype == "sphere":
+            light = {"type": "sphere", "center": c, "radius": size}
+        else:
+            a = g.rand_unit()
+            b, e = g.frame(a)
+            s = [size * 10 ** rng.uniform(-6, 0) for _ in range(3)]
+            s[rng.randrange(3)] = size
+            light = {"type": "ellipsoid", "center": c, "axes": [scale(a, s[0]), scale(b, s[1]), scale(e, s[2])]}
+        mat = g.material(("phong", "blinn", "beckmann", "ggx")[(i // 3) % 4])
+        if mat["distribution"] != "phong" and rng.random() < 0.5:
+            mat["f0"] = rng.uniform(0, 1)
+        cases.append({"id": "extreme-%04d" % i, "p": p, "n": n, "v": v, "light": light, "material": mat})
+    return cases
+
+
 def near_cases(seed):
     g = Gen(seed)
     rng = g.rng
@@ -241,7 +286,7 @@ def main():
     ap.add_argument("count", type=int)
     ap.add_argument("seed", type=int)
     ap.add_argument("out")
-    ap.add_argument("--kind", choices=["hard", "near", "aimed"], default="hard")
+    ap.add_argument("--kind", choices=["hard", "near", "aimed", "extreme"], default="hard")
     ap.add_argument("--lights", default="disk,sphere,ellipsoid",
                     help="comma-separated light types of --kind hard (polygon, disk, sphere, ellipsoid)")
     a = ap.parse_args()
@@ -253,6 +298,8 @@ def main():
         cases = hard_cases(a.count, a.seed, lights)
     elif a.kind == "aimed":
         cases = aimed_cases(a.count, a.seed)
+    elif a.kind == "extreme":
+        cases = extreme_cases(a.count, a.seed)
     else:
         cases = near_cases(a.seed)
     with open(a.out, "w") as f:
