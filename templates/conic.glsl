@@ -167,6 +167,15 @@ struct AlConicPlan {
     int count;
 };
 
+// Puts a before b by their first component.
+void al_order(AL_INOUT(rvec2) a, AL_INOUT(rvec2) b) {
+    if (b.x < a.x) {
+        rvec2 t = a;
+        a = b;
+        b = t;
+    }
+}
+
 AlConicPlan al_conic_plan(rvec3 C, rvec3 U, rvec3 V, real psi0, real psi1, rvec3 a, rvec3 b,
                           real lobe, bool with_lobe) {
     // Features as (centre, sigma), the lobe's first.
@@ -207,15 +216,18 @@ AlConicPlan al_conic_plan(rvec3 C, rvec3 U, rvec3 V, real psi0, real psi1, rvec3
         }
     }
     if (nf == 0) feat[nf++] = rvec2(AL_R(0.5) * (psi0 + psi1), AL_R(1.0));
-    // Sort by centre (at most four: insertion).
-    for (int i = 1; i < 4; ++i) {
-        for (int j = i; j > 0; --j) {
-            if (j >= nf || !(feat[j].x < feat[j - 1].x)) break;
-            rvec2 t = feat[j];
-            feat[j] = feat[j - 1];
-            feat[j - 1] = t;
-        }
-    }
+    // Sort by centre: a fixed network of compare-exchanges on constant indices, the
+    // unused entries keyed past psi1 so that they stay last. (An insertion sort with
+    // swaps at run-time indices came out of lavapipe with one entry duplicated over
+    // another: every microfacet variant shaded a sphere 1e-3 of its radius away as 0
+    // on lavapipe and right on the CPU mirror.)
+    for (int i = 0; i < 4; ++i)
+        if (i >= nf) feat[i].x = psi1 + AL_R(1.0);
+    al_order(feat[0], feat[1]);
+    al_order(feat[2], feat[3]);
+    al_order(feat[0], feat[2]);
+    al_order(feat[1], feat[3]);
+    al_order(feat[1], feat[2]);
     AlConicPlan plan;
     plan.count = nf;
     for (int i = 0; i < 4; ++i) {
