@@ -125,9 +125,11 @@ real al_conic_split(rvec3 C, rvec3 U, rvec3 V, real psi0, real psi1, rvec3 a, rv
 }
 
 // Where P comes closest to p (the origin) on [psi0, psi1], and the width of that
-// approach in psi: |P|^2 ~ |P|min^2 + |P'|^2 (psi - psi_c)^2, so 1 / |P|^2 and the
-// direction u turn on the scale |P|min / |P'| (a point near a disk's rim sees the
-// near rim sweep almost pi in a sliver of psi). Newton on q = |P|^2 (q' = 2 P.P',
+// approach in psi: the t at which P + P' t + P'' t^2 / 2 can have moved |P|min,
+// the root of |P''| t^2 / 2 + |P'| t = |P|min. Past it 1 / |P|^2 and the direction
+// u turn slowly (a point near a disk's rim sees the near rim sweep almost pi in
+// a sliver of psi, |P|min / |P'|; near a needle's tip, where P' vanishes too, the
+// curvature term sets it, sqrt(2 |P|min / |P''|)). Newton on q = |P|^2 (q' = 2 P.P',
 // q'' = 2 (|P'|^2 + P.(C - P))) from the best of five samples, as al_conic_peak.
 rvec2 al_conic_nearest(rvec3 C, rvec3 U, rvec3 V, real psi0, real psi1) {
     real best = psi0, best_q = AL_R(1e300);
@@ -149,7 +151,8 @@ rvec2 al_conic_nearest(rvec3 C, rvec3 U, rvec3 V, real psi0, real psi1) {
     }
     rvec2 sc = al_cis(best);
     rvec3 P = al_conic_point(C, U, V, sc), dP = V * sc.y - U * sc.x;
-    return rvec2(best, length(P) / max(length(dP), AL_R(1e-300)));
+    real lp = length(P), l1 = length(dP), l2 = length(C - P);
+    return rvec2(best, AL_R(2.0) * lp / max(l1 + sqrt(l1 * l1 + AL_R(2.0) * l2 * lp), AL_R(1e-300)));
 }
 
 // How a part [psi0, psi1] (at most pi/2) is integrated: up to four sub-parts, each
@@ -158,8 +161,8 @@ rvec2 al_conic_nearest(rvec3 C, rvec3 U, rvec3 V, real psi0, real psi1) {
 // (with_lobe; al_conic_split, al_conic_peak; width sqrt(s^2 + lobe^2) / rate), the
 // fold near w = -b (b != 0: microfacets; width |w + b| / rate) and p's nearest
 // point (al_conic_nearest). A fold or nearest point counts where it is sharper than
-// the lobe's rule about the closest lobe centre; within half that rule's width of
-// it, it replaces that rule (whose peak, twice as wide as their distance, the
+// the rule about the closest centre found before it; within half that rule's width
+// of it, it replaces that rule (whose peak, twice as wide as their distance, the
 // sharper rule's outer pieces still resolve). Sub-parts meet halfway between centres.
 // Without a feature: one sub-part, centred, sigma 1 (plain Gauss-Legendre).
 struct AlConicPlan {
@@ -181,7 +184,7 @@ AlConicPlan al_conic_plan(rvec3 C, rvec3 U, rvec3 V, real psi0, real psi1, rvec3
     // Features as (centre, sigma), the lobe's first.
     rvec2 feat[4];
     for (int i = 0; i < 4; ++i) feat[i] = rvec2(AL_R(0.0));
-    int nf = 0, nl = 0;
+    int nf = 0;
     if (with_lobe) {
         real cut = al_conic_split(C, U, V, psi0, psi1, a, b);
         for (int k = 0; k < 2; ++k) {
@@ -191,7 +194,6 @@ AlConicPlan al_conic_plan(rvec3 C, rvec3 U, rvec3 V, real psi0, real psi1, rvec3
             feat[nf++] = rvec2(pk.psi, clamp(sqrt(s * s + lobe * lobe) / max(pk.rate, AL_R(1e-30)),
                                              AL_R(1e-12), AL_R(1.0)));
         }
-        nl = nf;
     }
     for (int k = 0; k < 2; ++k) {
         rvec2 x;
@@ -204,8 +206,11 @@ AlConicPlan al_conic_plan(rvec3 C, rvec3 U, rvec3 V, real psi0, real psi1, rvec3
         }
         x.y = clamp(x.y, AL_R(1e-12), AL_R(1.0));
         int closest = -1;
-        for (int i = 0; i < 2; ++i)
-            if (i < nl && (closest < 0 || abs(x.x - feat[i].x) < abs(x.x - feat[closest].x)))
+        // Against every feature so far, the fold included: a nearest point on top
+        // of the fold compared with the lobe only would be added beside it, and the
+        // two would meet at one centre, leaving the sharper an empty sub-part.
+        for (int i = 0; i < 3; ++i)
+            if (i < nf && (closest < 0 || abs(x.x - feat[i].x) < abs(x.x - feat[closest].x)))
                 closest = i;
         real ref = closest >= 0 ? feat[closest].y : AL_R(1.0);
         if (!(x.y < ref)) continue;

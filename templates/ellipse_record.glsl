@@ -27,11 +27,18 @@ AlCase al_ellipse_record(ArealightSurface s, rvec3 rel, rvec3 U, rvec3 V, bool l
     rvec3 u1 = rvec3(dot(U, x), dot(U, y), dot(U, z)) / d;
     rvec3 v1 = rvec3(dot(V, x), dot(V, y), dot(V, z)) / d;
     // facing = area cos(theta_l) / d^2: the cone's opening. Below the rounding of
-    // the fp32 inputs (relative 1e-7 of |U||V|) p lies on the light's plane as far as
-    // the inputs can tell, and the cone has no interior: the contract's 0.
+    // u1 and v1 in the working precision p lies on the light's plane as far as the
+    // arithmetic can tell, and the cone has no interior: the contract's 0. Not the
+    // inputs' fp32 rounding: the fp32 inputs are exact values, and a point 1e-8 off
+    // the plane at the rim (or at a needle's tip) sees a lune of half the sky.
     real facing = cross(u1, v1).z;
     if (facing < AL_R(0.0)) v1 = -v1;
-    seen = seen && abs(facing) > AL_R(1e-7) * length(u1) * length(v1) && !isinf(facing);
+#if AL_PRECISION_FP64
+    const real facing_min = AL_R(1e-13);
+#else
+    const real facing_min = AL_R(1e-7);
+#endif
+    seen = seen && abs(facing) > facing_min * length(u1) * length(v1) && !isinf(facing);
     AlCase c;
     c.n = rvec4(dot(n, x), dot(n, y), dot(n, z), AL_R(0.0));
     c.v = rvec4(dot(v, x), dot(v, y), dot(v, z), AL_R(0.0));
