@@ -24,7 +24,7 @@
 // oracle of the fp32-rounded inputs; beyond 1e-4 there: views within 2e-7 of
 // grazing, ndf at n.v < 0, p beside a needle's tip or 1e-8 off a disk's rim.
 // Cost (arealight bench, lavapipe, typical disk cases): phong 24 us per case
-// (53 833 x86-64 instructions), ggx 136 to 179 us, blinn 227 to 289 us, the same
+// (57 270 x86-64 instructions), ggx 136 to 179 us, blinn 227 to 289 us, the same
 // within those ranges from N = 1 to 1e5 and alpha = 1e-3 to 1 (a fixed bound on the
 // nodes, ellipse_clip.glsl; which pieces a case needs varies).
 

@@ -119,25 +119,39 @@ struct Lobe {
     double param;
 };
 
-// Runs `cases` (all of `light` and of lobe's distribution) on both backends and
-// holds every quantity to the exact methods' max bar against the oracle.
-void check_exact_max(const Lobe& lobe, LightType light, const CaseSet& cases) {
-    const std::string variant = exact_variant(lobe.d, light);
-    for (Backend b : {Backend::Cpu, Backend::Vulkan}) {
-        const ResultSet out = run(b, variant, cases);
-        REQUIRE(out.results.size() == cases.cases.size());
-        for (std::size_t i = 0; i < cases.cases.size(); ++i) {
-            const CaseResult ref = reference_case(cases.cases[i], {});
-            const CaseResult& r = out.results[i];
-            const double e =
-                std::max({rel_err(*r.diffuse, *ref.diffuse), rel_err(*r.specular, *ref.specular),
-                          rel_err(third(r), third(ref))});
-            INFO(variant << " param " << lobe.param << ", " << r.id << ", backend " << to_string(b)
-                         << ": diffuse " << *r.diffuse << " against " << *ref.diffuse
-                         << ", specular " << *r.specular << " against " << *ref.specular
-                         << ", third " << third(r) << " against " << third(ref)
-                         << ", worst relative error " << e);
-            CHECK(e <= kExactMaxTol);
+// Builds each lobe's cases with `build` (a function of the lobe returning a vector
+// of cases of `light`), runs them on both backends, one variant per distribution
+// (each lavapipe compile costs seconds), and holds every quantity to the exact
+// methods' max bar against the oracle.
+template <class Build>
+void check_exact_max(LightType light, const std::vector<Lobe>& lobes, Build build) {
+    for (Distribution d : kDists) {
+        CaseSet cases;
+        for (const Lobe& lobe : lobes) {
+            if (lobe.d != d) continue;
+            for (Case c : build(lobe)) {
+                c.id += ", param " + std::to_string(lobe.param);
+                cases.cases.push_back(c);
+            }
+        }
+        if (cases.cases.empty()) continue;
+        const std::string variant = exact_variant(d, light);
+        for (Backend b : {Backend::Cpu, Backend::Vulkan}) {
+            const ResultSet out = run(b, variant, cases);
+            REQUIRE(out.results.size() == cases.cases.size());
+            for (std::size_t i = 0; i < cases.cases.size(); ++i) {
+                const CaseResult ref = reference_case(cases.cases[i], {});
+                const CaseResult& r = out.results[i];
+                const double e =
+                    std::max({rel_err(*r.diffuse, *ref.diffuse),
+                              rel_err(*r.specular, *ref.specular), rel_err(third(r), third(ref))});
+                INFO(variant << ", " << r.id << ", backend " << to_string(b) << ": diffuse "
+                             << *r.diffuse << " against " << *ref.diffuse << ", specular "
+                             << *r.specular << " against " << *ref.specular << ", third "
+                             << third(r) << " against " << third(ref) << ", worst relative error "
+                             << e);
+                CHECK(e <= kExactMaxTol);
+            }
         }
     }
 }
@@ -198,24 +212,24 @@ TEST_CASE("exact curved lights: a sphere almost touching p under wide microfacet
     // come out in order. lavapipe once returned 0 here for every lobe wider than
     // alpha ~ 0.55 (an insertion sort at run-time indices in conic.glsl lost an entry)
     // while the CPU mirror was right; both are held to the exact methods' bar.
-    const glm::dvec3 n = glm::normalize(glm::dvec3(0.898955762386322, -0.43237701058387756,
-                                                   0.0702042430639267));
+    const glm::dvec3 n =
+        glm::normalize(glm::dvec3(0.898955762386322, -0.43237701058387756, 0.0702042430639267));
     const glm::dvec3 v(0.4940246641635895, -0.5553945302963257, -0.6689369082450867);
     const glm::dvec3 toward(0.12105839059889324, 0.9867400894098468, -0.1081150406606468);
-    const Lobe lobes[] = {{Distribution::Ggx, 0.45},      {Distribution::Ggx, 0.568},
-                          {Distribution::Ggx, 1.0},       {Distribution::Beckmann, 0.568},
-                          {Distribution::Beckmann, 0.9},  {Distribution::Blinn, 4.2}};
-    for (const Lobe& lobe : lobes) {
-        CaseSet cases;
+    const std::vector<Lobe> lobes = {{Distribution::Ggx, 0.45},     {Distribution::Ggx, 0.568},
+                                     {Distribution::Ggx, 1.0},      {Distribution::Beckmann, 0.568},
+                                     {Distribution::Beckmann, 0.9}, {Distribution::Blinn, 4.2}};
+    check_exact_max(LightType::Sphere, lobes, [&](const Lobe& lobe) {
+        std::vector<Case> cases;
         for (double gap : {1e-3, 1e-4}) {
             Case c = curved_case("gap-" + std::to_string(gap), LightType::Sphere, lobe.d,
                                  lobe.param, n, v);
             c.light.center = a3((1 + gap) * toward);
             c.light.radius = 1.0;
-            cases.cases.push_back(c);
+            cases.push_back(c);
         }
-        check_exact_max(lobe, LightType::Sphere, cases);
-    }
+        return cases;
+    });
 }
 
 TEST_CASE("exact curved lights: p a hair off a disk's plane at its rim or beside a needle's tip",
@@ -232,25 +246,22 @@ TEST_CASE("exact curved lights: p a hair off a disk's plane at its rim or beside
     // became an empty sub-part beside the fold's (ggx 0.25: ndf 14% high).
     const glm::dvec3 n = glm::normalize(glm::dvec3(0.375, 0.25, -0.875));
     const glm::dvec3 v = glm::normalize(glm::dvec3(-0.25, 0.125, -0.5));
-    const Lobe lobes[] = {{Distribution::Phong, 8},   {Distribution::Phong, 750},
-                          {Distribution::Blinn, 200}, {Distribution::Beckmann, 0.125},
-                          {Distribution::Ggx, 0.25},  {Distribution::Ggx, 0.03125}};
-    for (const Lobe& lobe : lobes) {
-        CaseSet cases;
+    const std::vector<Lobe> lobes = {{Distribution::Phong, 8},   {Distribution::Phong, 750},
+                                     {Distribution::Blinn, 200}, {Distribution::Beckmann, 0.125},
+                                     {Distribution::Ggx, 0.25},  {Distribution::Ggx, 0.03125}};
+    check_exact_max(LightType::Disk, lobes, [&](const Lobe& lobe) {
         Case rim = curved_case("rim", LightType::Disk, lobe.d, lobe.param, n, v);
         rim.p = {-0.25, 0, std::ldexp(1.0, -27)};
         rim.light.center = {0, 0, 0};
         rim.light.u = {0.25, 0, 0};
         rim.light.v = {0, 0.125, 0};
         rim.light.two_sided = true;
-        cases.cases.push_back(rim);
         Case tip = rim;
         tip.id = "needle-tip";
         tip.p = {-0.25 - std::ldexp(1.0, -19), std::ldexp(1.0, -18), std::ldexp(1.0, -22)};
         tip.light.v = {0, std::ldexp(1.0, -16), 0};
-        cases.cases.push_back(tip);
-        check_exact_max(lobe, LightType::Disk, cases);
-    }
+        return std::vector<Case>{rim, tip};
+    });
 }
 
 TEST_CASE("exact curved lights: closed forms", "[shading][curved]") {
