@@ -136,11 +136,13 @@ void check_exact_max(LightType light, const std::vector<Lobe>& lobes, Build buil
         }
         if (cases.cases.empty()) continue;
         const std::string variant = exact_variant(d, light);
+        std::vector<CaseResult> refs;
+        for (const Case& c : cases.cases) refs.push_back(reference_case(c, {}));
         for (Backend b : {Backend::Cpu, Backend::Vulkan}) {
             const ResultSet out = run(b, variant, cases);
             REQUIRE(out.results.size() == cases.cases.size());
             for (std::size_t i = 0; i < cases.cases.size(); ++i) {
-                const CaseResult ref = reference_case(cases.cases[i], {});
+                const CaseResult& ref = refs[i];
                 const CaseResult& r = out.results[i];
                 const double e =
                     std::max({rel_err(*r.diffuse, *ref.diffuse),
