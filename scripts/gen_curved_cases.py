@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Seeded hard light cases (arealight-cases/1) that stress the exact and peak methods.
 
-Usage: gen_curved_cases.py COUNT SEED OUT.json [--kind hard|near|aimed|extreme] [--lights L,...]
+Usage: gen_curved_cases.py COUNT SEED OUT.json [--kind hard|near|aimed|extreme|degenerate] [--lights L,...]
 
 --kind hard (default): the lights of --lights (default disk,sphere,ellipsoid; also
 polygon: convex 3- to 8-gons facing p, jittered vertices) in turn, for phong, blinn,
@@ -29,6 +29,21 @@ no-NaN/Inf/negative guarantee and the fp32 input conditioning: coordinates of sc
 distance 1 + 1e-7 sizes) to 1e3 sizes away, disks seen edge-on, ellipsoids and
 disks flattened to 1e-6, n.v from exactly 0 through 1e-7 to 1, all four
 distributions (materials as above, half the microfacet ones with an f0).
+
+--kind degenerate: exactly degenerate but common inputs, every light type of
+--lights (default: all four) and every distribution in turn, each one of
+  vn       v exactly n (a top-down orthographic view), n random, the light about
+           the mirror direction r = n or beside it, a fifth across the horizon
+  floor    p on a floor grid of fp32-exact points (multiples of 1/8), n = v = +z,
+           an axis-aligned light overhead with fp32-exact coordinates: rectangle
+           (polygon), downward disk, sphere, axis-aligned ellipsoid
+  axisview the floor with an axis-aligned, fp32-exact view (v = (0, 0.6, 0.8) and
+           the like)
+  vertex   r exactly through a corner of an axis-aligned rectangle, a point of a
+           disk's rim, a sphere's or an ellipsoid's silhouette point in the plane
+           of n and r (p = 0, n = +z, v = (-0.6, 0, 0.8): r = (0.6, 0, 0.8))
+(a quarter of the disks and polygons two-sided, a tenth of the floor lights facing
+away: 0).
 
 The same COUNT, SEED and kind give the same file (near: COUNT is ignored, 96
 cases). The oracle: arealight reference --cases OUT.json --out REF.json.
@@ -167,12 +182,14 @@ def hard_case(g, index, dist, ltype):
             "light": light, "material": g.material(dist)}
 
 
-def hard_cases(count, seed, lights):
+def cases_in_turn(make, count, seed, lights):
+    """COUNT cases of make(g, index, dist, light), every distribution in turn and, after
+    each four, the next light type; a None from make is drawn again."""
     g, cases, i = Gen(seed), [], 0
     dists = ["phong", "blinn", "beckmann", "ggx"]
     while len(cases) < count:
         i += 1
-        c = hard_case(g, len(cases), dists[i % 4], lights[(i // 4) % len(lights)])
+        c = make(g, len(cases), dists[i % 4], lights[(i // 4) % len(lights)])
         if c:
             cases.append(c)
     return cases
@@ -248,6 +265,93 @@ def extreme_cases(count, seed):
     return cases
 
 
+def degenerate_case(g, index, dist, ltype):
+    rng = g.rng
+    scen = rng.choice(["vn", "vn", "floor", "axisview", "vertex"])
+    mat = g.material(dist)
+    sided = rng.random() < 0.25
+    if scen == "vn":
+        p = [rng.uniform(-3, 3) for _ in range(3)]
+        n = g.rand_unit()
+        size = 10 ** rng.uniform(-1.5, 0)
+        d = size * 10 ** rng.uniform(0.05, 1.3)
+        e1, _ = g.frame(n)
+        if rng.random() < 0.2:  # across the horizon
+            ang = rng.uniform(-0.6, 0.6) * size / d
+        else:  # about r = n, up to twice the light's angular size off it
+            ang = math.pi / 2 - rng.uniform(0, 2) * size / d
+        c = add(p, unit(add(scale(e1, math.cos(ang)), n, math.sin(ang))), d)
+        toward = unit(add(p, c, -1))
+        if ltype == "polygon":
+            light = {"type": "polygon", "vertices": g.polygon_facing(p, c, size, -1), "two_sided": sided}
+        elif ltype == "disk":
+            a, b = g.frame(unit(add(c, p, -1)))
+            light = {"type": "disk", "center": c, "u": scale(a, size),
+                     "v": scale(b, size * 10 ** rng.uniform(-1, 0)), "two_sided": sided}
+            if dot(cross(light["u"], light["v"]), toward) < 0:
+                light["v"] = scale(light["v"], -1)
+        elif ltype == "sphere":
+            light = {"type": "sphere", "center": c, "radius": min(size, 0.9 * d)}
+        else:
+            a0 = g.rand_unit()
+            a1, a2 = g.frame(a0)
+            s = [size, size * 10 ** rng.uniform(-1, 0), size * 10 ** rng.uniform(-1, 0)]
+            if d <= 1.5 * size:
+                return None
+            light = {"type": "ellipsoid", "center": c, "axes": [scale(a0, s[0]), scale(a1, s[1]), scale(a2, s[2])]}
+        return {"id": "degenerate-vn-%s-%s-%03d" % (ltype, dist, index), "p": p, "n": n, "v": list(n),
+                "light": light, "material": mat}
+    n = [0.0, 0.0, 1.0]
+    if scen == "vertex":
+        p, v = [0.0, 0.0, 0.0], [-0.6, 0.0, 0.8]
+        h = rng.choice([1.0, 2.0, 4.0])
+        q = [0.75 * h, 0.0, h]  # on r = (0.6, 0, 0.8)
+        w, l = rng.choice([0.25, 0.5, 1.0]), rng.choice([0.25, 0.5, 1.0])
+        sx, sy = rng.choice([-1, 1]), rng.choice([-1, 1])
+        if ltype == "polygon":
+            # Corner q, the rectangle on either side of r in x and y.
+            vs = [q, [q[0] + sx * w, 0.0, h], [q[0] + sx * w, sy * l, h], [q[0], sy * l, h]]
+            if sx * sy > 0:  # counter-clockwise seen from below: facing p
+                vs = vs[::-1]
+            light = {"type": "polygon", "vertices": vs, "two_sided": sided}
+        elif ltype == "disk":
+            R = w
+            light = {"type": "disk", "center": [q[0] + sx * R, 0.0, h], "u": [R, 0.0, 0.0],
+                     "v": [0.0, -R * rng.choice([1.0, 0.5]), 0.0], "two_sided": sided}
+        elif ltype == "sphere":
+            # Centre on the x-z line through q perpendicular to r, at distance R: r touches it.
+            R = w
+            light = {"type": "sphere", "center": [q[0] + sx * 0.8 * R, 0.0, h - sx * 0.6 * R], "radius": R}
+        else:
+            R = w
+            light = {"type": "ellipsoid", "center": [q[0] + sx * 0.8 * R, 0.0, h - sx * 0.6 * R],
+                     "axes": [[R, 0.0, 0.0], [0.0, 2 * R, 0.0], [0.0, 0.0, R]]}
+        return {"id": "degenerate-vertex-%s-%s-%03d" % (ltype, dist, index), "p": p, "n": n, "v": v,
+                "light": light, "material": mat}
+    p = [rng.randint(-16, 16) / 8, rng.randint(-16, 16) / 8, 0.0]
+    v = list(n) if scen == "floor" else rng.choice(
+        [[0.0, 0.6, 0.8], [0.8, 0.0, 0.6], [-0.6, 0.0, 0.8], [0.0, -0.28, 0.96], [0.96, 0.0, 0.28]])
+    h = rng.choice([0.5, 1.0, 2.0, 3.0])
+    cx, cy = rng.randint(-8, 8) / 4, rng.randint(-8, 8) / 4
+    a, b = rng.choice([0.25, 0.5, 1.0]), rng.choice([0.25, 0.5, 1.0])
+    away = rng.random() < 0.1
+    if ltype == "polygon":
+        vs = [[cx - a, cy - b, h], [cx - a, cy + b, h], [cx + a, cy + b, h], [cx + a, cy - b, h]]
+        if away:
+            vs = vs[::-1]
+        light = {"type": "polygon", "vertices": vs, "two_sided": sided}
+    elif ltype == "disk":
+        light = {"type": "disk", "center": [cx, cy, h], "u": [a, 0.0, 0.0],
+                 "v": [0.0, b if away else -b, 0.0], "two_sided": sided}
+    elif ltype == "sphere":
+        light = {"type": "sphere", "center": [cx, cy, h], "radius": min(a, h / 2)}
+    else:
+        light = {"type": "ellipsoid", "center": [cx, cy, h],
+                 "axes": [[a, 0.0, 0.0], [0.0, b, 0.0], [0.0, 0.0, min(a, b, h / 2)]]}
+    return {"id": "degenerate-%s-%s-%s-%03d" % (scen, ltype, dist, index), "p": p, "n": n, "v": v,
+            "light": light, "material": mat}
+
+
 def near_cases(seed):
     g = Gen(seed)
     rng = g.rng
@@ -286,20 +390,24 @@ def main():
     ap.add_argument("count", type=int)
     ap.add_argument("seed", type=int)
     ap.add_argument("out")
-    ap.add_argument("--kind", choices=["hard", "near", "aimed", "extreme"], default="hard")
-    ap.add_argument("--lights", default="disk,sphere,ellipsoid",
-                    help="comma-separated light types of --kind hard (polygon, disk, sphere, ellipsoid)")
+    ap.add_argument("--kind", choices=["hard", "near", "aimed", "extreme", "degenerate"], default="hard")
+    ap.add_argument("--lights", default=None,
+                    help="comma-separated light types of --kind hard (polygon, disk, sphere, ellipsoid; "
+                    "default: the curved three) and degenerate (default: all four)")
     a = ap.parse_args()
-    lights = a.lights.split(",")
+    lights = (a.lights or ("polygon,disk,sphere,ellipsoid" if a.kind == "degenerate"
+                           else "disk,sphere,ellipsoid")).split(",")
     bad = [t for t in lights if t not in ("polygon", "disk", "sphere", "ellipsoid")]
     if bad:
         ap.error("unknown light type %s in --lights" % ", ".join(bad))
     if a.kind == "hard":
-        cases = hard_cases(a.count, a.seed, lights)
+        cases = cases_in_turn(hard_case, a.count, a.seed, lights)
     elif a.kind == "aimed":
         cases = aimed_cases(a.count, a.seed)
     elif a.kind == "extreme":
         cases = extreme_cases(a.count, a.seed)
+    elif a.kind == "degenerate":
+        cases = cases_in_turn(degenerate_case, a.count, a.seed, lights)
     else:
         cases = near_cases(a.seed)
     with open(a.out, "w") as f:

@@ -40,7 +40,7 @@ vec4 textureLod(const AlSampler2D& s, vec2 uv, float) { return texture(s, uv); }
 #endif
 
 // Texture coordinates of (rho, cos theta_v): texel centres are the fitted cells.
-vec2 al_ltc_uv(real param, real nv) {
+vec2 al_ltc_uv(real param, real nv, real sin_v) {
 #if defined(AL_DIST_PHONG) || defined(AL_DIST_BLINN)
     real alpha = sqrt(AL_R(2.0) / (param + AL_R(2.0)));
 #else
@@ -49,7 +49,11 @@ vec2 al_ltc_uv(real param, real nv) {
     real rho = sqrt(alpha);
     real u = clamp((rho - AL_LTC_RHO_MIN) / (AL_LTC_RHO_MAX - AL_LTC_RHO_MIN), AL_R(0.0),
                    AL_R(1.0));
-    real w = sqrt(clamp(AL_R(1.0) - nv, AL_R(0.0), AL_R(1.0)));
+    // sqrt(1 - cos) from the sine where the view is within 90 degrees of n: near n,
+    // 1 - n.v keeps only fp32's rounding of n.v (a view 3.4e-4 rad off n per ulp), the
+    // sine keeps its own digits.
+    real w = nv > AL_R(0.0) ? min(sin_v * inversesqrt(AL_R(1.0) + nv), AL_R(1.0))
+                            : sqrt(clamp(AL_R(1.0) - nv, AL_R(0.0), AL_R(1.0)));
     return vec2((rvec2(u, w) * (AL_LTC_SIZE - AL_R(1.0)) + AL_R(0.5)) / AL_LTC_SIZE);
 }
 
@@ -185,17 +189,21 @@ AlLtc al_ltc_lookup(AlCase c) {
     L.n = normalize(rvec3(c.n));
     rvec3 v = normalize(rvec3(c.v));
     L.nv = dot(L.n, v);
-    // v along n has no azimuth: any x.
-    rvec3 tx = v - L.n * L.nv;
-    real tl = length(tx);
-    rvec3 ty;
-    if (tl > AL_R(1e-7)) {
-        tx /= tl;
-        ty = cross(L.n, tx);
+    // The azimuth from n x v, whose rounding is absolute (~1 ulp) at every angle, and
+    // x = y x n, orthogonal to n to rounding even where v is n to the last bit:
+    // v - n (n.v) there is rounding along n, and a frame built from it had x = +-n.
+    // Below sin(theta_v) = 1e-4 the fitted lobe is isotropic to that order, so any
+    // azimuth serves; above it the azimuth's error is at most ulp / 1e-4 rad.
+    rvec3 ty = cross(L.n, v);
+    real ty_len = length(ty);
+    rvec3 tx;
+    if (ty_len > AL_R(1e-4)) {
+        ty /= ty_len;
+        tx = cross(ty, L.n);
     } else {
         al_tangent_frame(L.n, tx, ty);
     }
-    vec2 uv = al_ltc_uv(real(c.params.x), L.nv);
+    vec2 uv = al_ltc_uv(real(c.params.x), L.nv, ty_len);
     L.m = rvec4(textureLod(al_ltc_matrix, uv, 0.0f));
     L.amp = rvec4(textureLod(al_ltc_amplitude, uv, 0.0f));
     L.row0 = L.m.x * tx + L.m.y * L.n;

@@ -9,6 +9,7 @@
 
 #include "arealight/evaluator.hpp"
 #include "arealight/reference.hpp"
+#include "degenerate_cases.hpp"
 #include "eval_support.hpp"
 #include "test_support.hpp"
 
@@ -230,6 +231,8 @@ void check_variants_run(std::size_t half) {
     }
     const CaseSet curved = curved_cases_like(cases, 17);
     cases.cases.insert(cases.cases.end(), curved.cases.begin(), curved.cases.end());
+    const CaseSet& degenerate = degenerate_cases();
+    cases.cases.insert(cases.cases.end(), degenerate.cases.begin(), degenerate.cases.end());
     const auto all = enumerate_variants();
     for (std::size_t i = 0; i < all.size(); ++i) {
         if ((i + i / 2) % 2 != half) continue;
@@ -241,10 +244,7 @@ void check_variants_run(std::size_t half) {
         INFO(canonical_name(v) << ": " << why);
         REQUIRE(out);
         CHECK(!out->results.empty());
-        for (const auto& r : out->results) {
-            CHECK(std::isfinite(*r.diffuse));
-            CHECK(*r.specular >= 0.0);
-        }
+        check_finite_non_negative(*out, canonical_name(v));
     }
 }
 
