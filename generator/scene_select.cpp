@@ -73,11 +73,32 @@ std::optional<Method> method_named(const std::string& name) {
     return std::nullopt;
 }
 
-// The measured rows of one pair (and method), each with its parsed variant. Rows measured
-// at another sided or verts ran on a subset of the cases and are not comparable.
+// Whether the quality lets the variant be chosen (CONTRACT.md 7): fp64 only where the
+// scene allows it, tables and the patented peak functions unless it refuses them, and
+// never an excluded method; `why` says which rule refused it.
+bool allowed(const Variant& v, const SceneQuality& q, std::string* why = nullptr) {
+    auto refuse = [&](std::string reason) {
+        if (why) *why = std::move(reason);
+        return false;
+    };
+    if (effective_precision(v) == Precision::Fp64 && !q.fp64.value_or(false))
+        return refuse("it computes in fp64 (quality.precision is fp32 unless the scene says fp64)");
+    const VariantFamily* f = find_family(v);
+    if (f && !f->samplers.empty() && !q.tables.value_or(true))
+        return refuse("it samples tables (quality.tables is false)");
+    if (is_peak_method(v.method) && !q.patented.value_or(true))
+        return refuse("it is a patented peak-function method (quality.patented is false)");
+    if (std::find(q.exclude.begin(), q.exclude.end(), to_string(v.method)) != q.exclude.end())
+        return refuse(fmt::format("quality.exclude names {}", to_string(v.method)));
+    return true;
+}
+
+// The measured rows of one pair (and method) that the quality allows, each with its
+// parsed variant. Rows measured at another sided or verts ran on a subset of the cases and
+// are not comparable.
 std::vector<std::pair<Variant, const MeasuredVariant*>> candidates(
     const QualityData& measured, LightType light, Distribution dist,
-    const std::optional<Method>& method) {
+    const std::optional<Method>& method, const SceneQuality& q) {
     std::vector<std::pair<Variant, const MeasuredVariant*>> out;
     const Variant defaults;
     for (const auto& m : measured.variants) {
@@ -85,14 +106,70 @@ std::vector<std::pair<Variant, const MeasuredVariant*>> candidates(
         if (!v || v->light != light || v->dist != dist) continue;
         if (method && v->method != *method) continue;
         if (v->sided != defaults.sided || v->verts != defaults.verts) continue;
+        if (!allowed(*v, q)) continue;
         out.emplace_back(*v, &m);
     }
     return out;
 }
 
+// What a row costs, in the order rows are ranked: the GPU cost (CONTRACT.md 4) where the
+// row has one (rows without rank after those with), then the x86-64 count.
+std::tuple<int, double, std::size_t> cost_of(const MeasuredVariant& m) {
+    if (m.gpu) return {0, static_cast<double>(m.gpu->cost), m.x86_instructions};
+    return {1, 0.0, m.x86_instructions};
+}
+
 std::string measured_text(const MeasuredVariant& m) {
-    return fmt::format("measured error {:.4g} at {} x86 instructions ({})", m.error(),
-                       m.x86_instructions, m.report);
+    if (m.gpu)
+        return fmt::format("measured error {:.4g} at GPU cost {} cycles per wave, {:.3g}x its "
+                           "point light ({} {}; {})",
+                           m.error(), m.gpu->cost, m.gpu->ratio_to_point, m.gpu->family,
+                           m.gpu->mesa, m.report);
+    return fmt::format("measured error {:.4g} at {} x86 instructions, no GPU figures ({})",
+                       m.error(), m.x86_instructions, m.report);
+}
+
+std::optional<Method> checked_method(const std::string& name, const char* field,
+                                     const DiagnosticConsumer& diag) {
+    if (auto m = method_named(name)) return m;
+    std::vector<std::string> names;
+    for (const auto& f : variant_families())
+        if (std::find(names.begin(), names.end(), to_string(f.method)) == names.end())
+            names.push_back(to_string(f.method));
+    std::string list;
+    for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+    emit(diag, Severity::Error,
+         fmt::format("{}: no variant has method '{}' (methods: {})", field, name, list));
+    return std::nullopt;
+}
+
+// The pair's variant of quality.method alone, with the reason: that method at its
+// family's defaults, in fp32 where fp64 is not allowed and the family offers fp32.
+std::optional<SelectedVariant> method_default(LightType light, Distribution dist, Method method,
+                                              const SceneQuality& q,
+                                              const DiagnosticConsumer& diag) {
+    // Parsed rather than assembled, so that the family's own defaults apply (ltc computes
+    // in fp32 where Variant's default precision is fp64).
+    const std::string base = fmt::format("dist={},method={},light={}", to_string(dist),
+                                         to_string(method), to_string(light));
+    auto v = parse_variant(base, diag);
+    if (!v) return std::nullopt;
+    std::string why = fmt::format("quality.method {}: every other key at its default",
+                                  to_string(method));
+    if (effective_precision(*v) == Precision::Fp64 && !q.fp64.value_or(false)) {
+        if (auto fp32 = parse_variant(base + ",precision=fp32", {})) {
+            v = fp32;
+            why += " but precision=fp32 (the scene does not allow fp64)";
+        }
+    }
+    std::string refused;
+    if (!allowed(*v, q, &refused)) {
+        emit(diag, Severity::Error,
+             fmt::format("{}: quality.method {} cannot be used: {}", pair_name(light, dist),
+                         to_string(method), refused));
+        return std::nullopt;
+    }
+    return SelectedVariant{*v, why};
 }
 
 }  // namespace
@@ -100,31 +177,37 @@ std::string measured_text(const MeasuredVariant& m) {
 std::optional<std::vector<SelectedVariant>> select_variants(const Scene& scene,
                                                             const QualityData& measured,
                                                             const DiagnosticConsumer& diag) {
-    std::optional<Method> method;
-    if (scene.method) {
-        method = method_named(*scene.method);
-        if (!method) {
-            std::vector<std::string> names;
-            for (const auto& f : variant_families())
-                if (std::find(names.begin(), names.end(), to_string(f.method)) == names.end())
-                    names.push_back(to_string(f.method));
-            std::string list;
-            for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-            emit(diag, Severity::Error,
-                 fmt::format("quality.method: no variant has method '{}' (methods: {})",
-                             *scene.method, list));
-            return std::nullopt;
-        }
-    }
     std::set<std::pair<LightType, Distribution>> pairs;
     for (const auto& l : scene.lights)
         for (const auto& m : scene.materials) pairs.emplace(l.type, m.distribution);
 
-    const double max_error = scene.max_error.value_or(kDefaultMaxError);
     std::vector<SelectedVariant> out;
     bool ok = true;
+    // Methods are checked once per distribution's quality (its exclude names too), so that
+    // a misspelt name is one error, not one per light type.
+    std::set<Distribution> checked;
     for (const auto& [light, dist] : pairs) {
         const std::string pair = pair_name(light, dist);
+        std::string conflict;
+        const SceneQuality q = effective_quality(scene, dist, &conflict);
+        if (!conflict.empty()) {
+            if (checked.insert(dist).second) emit(diag, Severity::Error, conflict);
+            ok = false;
+            continue;
+        }
+        std::optional<Method> method;
+        if (q.method) {
+            method = checked_method(*q.method, "quality.method",
+                                    checked.count(dist) ? DiagnosticConsumer{} : diag);
+            if (!method) {
+                checked.insert(dist);
+                ok = false;
+                continue;
+            }
+        }
+        if (checked.insert(dist).second)
+            for (const auto& name : q.exclude)
+                if (!checked_method(name, "quality.exclude", diag)) ok = false;
         if (!has_family(light, dist, method)) {
             emit(diag, Severity::Error,
                  method ? fmt::format("{}: no variant has method={} ('arealight variants' lists "
@@ -137,42 +220,34 @@ std::optional<std::vector<SelectedVariant>> select_variants(const Scene& scene,
             continue;
         }
         const LightNeeds needs = needs_of(scene, light);
-        if (method && !scene.max_error) {
-            // Parsed rather than assembled, so that the family's own defaults apply (ltc
-            // computes in fp32 where Variant's default precision is fp64).
-            const auto v = parse_variant(fmt::format("dist={},method={},light={}", to_string(dist),
-                                                     to_string(*method), to_string(light)),
-                                         diag);
-            if (!v) {
+        if (method && !q.max_error) {
+            auto chosen = method_default(light, dist, *method, q, diag);
+            if (!chosen) {
                 ok = false;
                 continue;
             }
-            out.push_back({specialise(*v, needs), fmt::format("quality.method {}: every other key "
-                                                              "at its default",
-                                                              to_string(*method))});
+            chosen->variant = specialise(chosen->variant, needs);
+            out.push_back(std::move(*chosen));
             continue;
         }
-        const auto found = candidates(measured, light, dist, method);
+        const auto found = candidates(measured, light, dist, method, q);
         if (found.empty()) {
             emit(diag, Severity::Error,
-                 fmt::format("{}: no measured variant{} in the quality data (arealight quality "
-                             "regenerates it from the reports)",
+                 fmt::format("{}: no measured variant{} that the scene's quality allows in the "
+                             "quality data (arealight quality regenerates it from the reports)",
                              pair, method ? " of method=" + std::string(to_string(*method)) : ""));
             ok = false;
             continue;
         }
+        const double max_error = q.max_error.value_or(kDefaultMaxError);
         // Cheapest meeting the bound; ties by error, then name, so the choice is stable.
         auto cheaper = [](const auto& a, const auto& b) {
-            return std::make_tuple(a.second->x86_instructions, a.second->error(),
-                                   a.second->variant) < std::make_tuple(b.second->x86_instructions,
-                                                                        b.second->error(),
-                                                                        b.second->variant);
+            return std::make_tuple(cost_of(*a.second), a.second->error(), a.second->variant) <
+                   std::make_tuple(cost_of(*b.second), b.second->error(), b.second->variant);
         };
         auto more_accurate = [](const auto& a, const auto& b) {
-            return std::make_tuple(a.second->error(), a.second->x86_instructions,
-                                   a.second->variant) < std::make_tuple(b.second->error(),
-                                                                        b.second->x86_instructions,
-                                                                        b.second->variant);
+            return std::make_tuple(a.second->error(), cost_of(*a.second), a.second->variant) <
+                   std::make_tuple(b.second->error(), cost_of(*b.second), b.second->variant);
         };
         const std::pair<Variant, const MeasuredVariant*>* best = nullptr;
         for (const auto& c : found)
@@ -183,12 +258,13 @@ std::optional<std::vector<SelectedVariant>> select_variants(const Scene& scene,
                               measured_text(*best->second));
         } else {
             best = &*std::min_element(found.begin(), found.end(), more_accurate);
-            why = fmt::format("most accurate, none meets {:g}: {}", max_error,
+            why = fmt::format("most accurate allowed, none meets {:g}: {}", max_error,
                               measured_text(*best->second));
             emit(diag, Severity::Warning,
-                 fmt::format("{}: no measured variant meets max_error {:g}; using the most "
-                             "accurate, {}, {}",
-                             pair, max_error, best->second->variant, measured_text(*best->second)));
+                 fmt::format("{}: no variant the scene's quality allows meets max_error {:g}; "
+                             "using the most accurate, {}, which reaches {:.4g} ({})",
+                             pair, max_error, best->second->variant, best->second->error(),
+                             measured_text(*best->second)));
         }
         out.push_back({specialise(best->first, needs), why});
     }

@@ -333,7 +333,8 @@ std::vector<VariantFamily> curved_rows(const std::vector<VariantFamily>& polygon
             f.keys.clear();
             if (row.method == Method::Exact) {
                 // The light's true boundary, clipped in closed form (ellipse_clip.glsl), at
-                // the polygon family's default keys only (CI compiles every variant).
+                // the polygon family's default keys but precision (CI compiles every
+                // variant).
                 f.templates.clear();
                 for (const auto& t : row.templates) {
                     if (t == "light_polygon.glsl" || t == "peak_rule.glsl") continue;
@@ -345,10 +346,15 @@ std::vector<VariantFamily> curved_rows(const std::vector<VariantFamily>& polygon
                 }
                 f.templates.push_back("ellipse_clip.glsl");
                 f.templates.push_back("light_ellipse.glsl");
+                // fp32 beside the fp64 reference: what a GPU runs (fp64 is 1/16 rate or
+                // less there) and what a scene's default quality may choose.
                 for (const auto& k : row.keys) {
                     if (k.key == "sided" || k.key == "verts") continue;
                     const std::string d = default_of(k);
-                    f.keys.emplace_back(k.key, std::vector<std::string>{d}, d);
+                    f.keys.emplace_back(k.key,
+                                        k.key == "precision" ? std::vector<std::string>{"fp64", "fp32"}
+                                                             : std::vector<std::string>{d},
+                                        d);
                 }
                 out.push_back(std::move(f));
                 continue;

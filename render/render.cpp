@@ -36,12 +36,16 @@ std::optional<SelectedVariant> render_variant(const Scene& scene, LightType ligh
     // its type, the scene's quality), and the other pairs' problems, e.g. those a
     // --variant covers, are not this one's.
     Scene part;
-    part.max_error = scene.max_error;
-    part.method = scene.method;
+    part.quality = scene.quality;
     for (const auto& l : scene.lights)
         if (l.type == light) part.lights.push_back(l);
-    for (const auto& m : scene.materials)
-        if (m.distribution == dist) part.materials.push_back(m);
+    for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+        if (scene.materials[i].distribution != dist) continue;
+        part.materials.push_back(scene.materials[i]);
+        part.material_quality.push_back(i < scene.material_quality.size()
+                                            ? scene.material_quality[i]
+                                            : std::nullopt);
+    }
     auto selected = select_variants(part, measured, diag);
     if (!selected) return std::nullopt;
     if (selected->size() != 1) {

@@ -417,7 +417,7 @@ TEST_CASE("render: an uncovered pair takes the scene's selection", "[render]") {
     // Without quality the bound is kDefaultMaxError (0.02): only pearson meets it.
     for (const Want& w : {Want{std::nullopt, Method::Pearson}, Want{0.1, Method::Ltc},
                           Want{0.001, Method::Pearson}}) {
-        s.max_error = w.max_error;
+        s.quality.max_error = w.max_error;
         Collect c;
         auto v = render_variant(s, LightType::Polygon, Distribution::Phong, q, c.consumer());
         INFO("max_error " << w.max_error.value_or(-1) << "\n" << c.all());
@@ -427,8 +427,8 @@ TEST_CASE("render: an uncovered pair takes the scene's selection", "[render]") {
         CHECK(v->variant.sided == Sided::Any);
     }
     // quality.method alone: that method, whatever the data says.
-    s.max_error.reset();
-    s.method = "ltc";
+    s.quality.max_error.reset();
+    s.quality.method = "ltc";
     Collect c;
     auto v = render_variant(s, LightType::Polygon, Distribution::Phong, q, c.consumer());
     INFO(c.all());
@@ -473,7 +473,7 @@ TEST_CASE("render: the default variants are the selection, --variant overrides",
     auto ggx = parse_variant("dist=ggx,method=exact,light=polygon", c.consumer());
     REQUIRE(ggx);
     opt.variants.push_back(*ggx);
-    s.max_error = 0.1;
+    s.quality.max_error = 0.1;
     RenderStats stats;
     REQUIRE(render(s, opt, ev.get(), c.consumer(), {}, &stats));
     INFO(c.all());
@@ -490,7 +490,7 @@ TEST_CASE("render: the default variants are the selection, --variant overrides",
                  "quality regenerates it from the reports)"));
 
     // A method no variant has fails the selection, but not pairs every --variant covers.
-    s.method = "magic";
+    s.quality.method = "magic";
     auto phong = parse_variant("dist=phong,method=exact,light=polygon", c.consumer());
     REQUIRE(phong);
     opt.variants = {*ggx, *phong};

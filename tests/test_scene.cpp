@@ -77,22 +77,22 @@ TEST_CASE("scene: a good file reads back every field") {
     CHECK(s.materials[0].alpha == 0.3);
     CHECK(s.materials[1].distribution == Distribution::Phong);
     CHECK(s.materials[1].exponent == 40);
-    REQUIRE(s.max_error);
-    CHECK(*s.max_error == 0.01);
-    CHECK_FALSE(s.method);
+    REQUIRE(s.quality.max_error);
+    CHECK(*s.quality.max_error == 0.01);
+    CHECK_FALSE(s.quality.method);
 }
 
 TEST_CASE("scene: quality is optional, and method is read as a name") {
     const Parsed none = parse(replace(kGood, ",\n  \"quality\": {\"max_error\": 0.01}", ""));
     INFO(none.all());
     REQUIRE(none.scene);
-    CHECK_FALSE(none.scene->max_error);
-    CHECK_FALSE(none.scene->method);
+    CHECK_FALSE(none.scene->quality.max_error);
+    CHECK_FALSE(none.scene->quality.method);
     const Parsed m = parse(replace(kGood, R"("max_error": 0.01)", R"("method": "ltc")"));
     REQUIRE(m.scene);
-    REQUIRE(m.scene->method);
-    CHECK(*m.scene->method == "ltc");
-    CHECK_FALSE(m.scene->max_error);
+    REQUIRE(m.scene->quality.method);
+    CHECK(*m.scene->quality.method == "ltc");
+    CHECK_FALSE(m.scene->quality.max_error);
 }
 
 TEST_CASE("scene: unknown fields are ignored at every level") {
@@ -190,4 +190,53 @@ TEST_CASE("scene: read_scene names the file it could not read, and reads a good 
     REQUIRE(diags.size() == 1);
     CHECK_THAT(diags[0].message, Contains("missing.json: cannot read"));
     fs::remove_all(dir);
+}
+
+TEST_CASE("scene: quality's precision, tables, patented, exclude and a material's own") {
+    std::string t = replace(kGood, R"("max_error": 0.01)",
+                            R"("max_error": 0.01, "precision": "fp64", "tables": false, )"
+                            R"("patented": false, "exclude": ["ltc", "point"])");
+    t = replace(t, R"("alpha": 0.3)", R"("alpha": 0.3, "quality": {"max_error": 0.001, "exclude": ["exact"]})");
+    const Parsed p = parse(t);
+    INFO(p.all());
+    REQUIRE(p.scene);
+    const SceneQuality& q = p.scene->quality;
+    CHECK(q.fp64 == std::optional<bool>(true));
+    CHECK(q.tables == std::optional<bool>(false));
+    CHECK(q.patented == std::optional<bool>(false));
+    CHECK(q.exclude == std::vector<std::string>{"ltc", "point"});
+    REQUIRE(p.scene->material_quality.size() == 2);
+    REQUIRE(p.scene->material_quality[0]);
+    CHECK_FALSE(p.scene->material_quality[1]);
+    // ggx: the material's max_error, the scene's other fields, both excludes.
+    const SceneQuality ggx = effective_quality(*p.scene, Distribution::Ggx, nullptr);
+    CHECK(ggx.max_error == std::optional<double>(0.001));
+    CHECK(ggx.fp64 == std::optional<bool>(true));
+    CHECK(ggx.exclude == std::vector<std::string>{"ltc", "point", "exact"});
+    const SceneQuality phong = effective_quality(*p.scene, Distribution::Phong, nullptr);
+    CHECK(phong.max_error == std::optional<double>(0.01));
+    CHECK(phong.exclude == std::vector<std::string>{"ltc", "point"});
+    // Without quality, everything is unset: fp32, tables and patented allowed.
+    const Parsed none = parse(replace(kGood, ",\n  \"quality\": {\"max_error\": 0.01}", ""));
+    REQUIRE(none.scene);
+    CHECK_FALSE(none.scene->quality.fp64);
+    CHECK_FALSE(none.scene->quality.tables);
+    CHECK(none.scene->quality.exclude.empty());
+}
+
+TEST_CASE("scene: malformed quality fields are rejected naming the field") {
+    rejected(replace(kGood, R"("max_error": 0.01)", R"("precision": "fp16")"),
+             {"field 'quality.precision'", "fp32", "fp64"});
+    rejected(replace(kGood, R"("max_error": 0.01)", R"("tables": "yes")"),
+             {"field 'quality.tables'", "true or false"});
+    rejected(replace(kGood, R"("max_error": 0.01)", R"("patented": 1)"),
+             {"field 'quality.patented'", "true or false"});
+    rejected(replace(kGood, R"("max_error": 0.01)", R"("exclude": "ltc")"),
+             {"field 'quality.exclude'", "array of method names"});
+    rejected(replace(kGood, R"("max_error": 0.01)", R"("exclude": ["ltc", 3])"),
+             {"field 'quality.exclude'", "array of method names"});
+    rejected(replace(kGood, R"("alpha": 0.3)", R"("alpha": 0.3, "quality": {"max_error": -2})"),
+             {"material 0: field 'quality.max_error'", "not a positive"});
+    rejected(replace(kGood, R"("alpha": 0.3)", R"("alpha": 0.3, "quality": 5)"),
+             {"material 0: field 'quality'", "object"});
 }

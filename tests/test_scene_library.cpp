@@ -259,7 +259,7 @@ TEST_CASE("scene library: GGX and Phong on mixed polygons give one function per 
                   {"type": "polygon", "vertices": [[-1,-1,3],[1,-1,3],[1,1,3],[-1,1,3]],
                    "two_sided": true} ],
       "materials": [ {"distribution": "ggx", "alpha": 0.2}, {"distribution": "phong", "exponent": 60} ],
-      "quality": {"method": "exact"}
+      "quality": {"method": "exact", "precision": "fp64"}
     })";
     const SceneLibrary lib = scene_library(mixed, "mixed.scene.json");
     std::vector<std::string> names;

@@ -110,7 +110,7 @@ bool enumerated(const Variant& v) {
 TEST_CASE("select: a GGX polygon scene yields exactly one GGX polygon variant") {
     Scene s = scene_of({polygon(4), polygon(3)},
                        {material(Distribution::Ggx, 0.3), material(Distribution::Ggx, 0.05)});
-    s.method = "ltc";
+    s.quality.method = "ltc";
     const Selected sel = select(s);
     INFO(sel.all());
     REQUIRE(sel.variants);
@@ -124,14 +124,14 @@ TEST_CASE("select: a GGX polygon scene yields exactly one GGX polygon variant") 
 TEST_CASE("select: sided and verts follow the scene where the family offers them") {
     const Material phong = material(Distribution::Phong, 40);
     Scene one = scene_of({polygon(3), polygon(3)}, {phong});
-    one.method = "arvo";
+    one.quality.method = "arvo";
     Selected sel = select(one);
     INFO(sel.all());
     CHECK(sel.names() ==
           std::vector<std::string>{"dist=phong,method=arvo,light=polygon,sided=one,verts=3"});
 
     Scene two = scene_of({polygon(4, true), polygon(3, true)}, {phong});
-    two.method = "arvo";
+    two.quality.method = "arvo";
     sel = select(two);
     INFO(sel.all());
     CHECK(sel.names() ==
@@ -139,7 +139,7 @@ TEST_CASE("select: sided and verts follow the scene where the family offers them
 
     // Mixed sidedness and a pentagon: run-time sidedness and the 8-vertex arrays.
     Scene mixed = scene_of({polygon(5, true), polygon(3, false)}, {phong});
-    mixed.method = "arvo";
+    mixed.quality.method = "arvo";
     sel = select(mixed);
     INFO(sel.all());
     REQUIRE(sel.variants);
@@ -187,20 +187,27 @@ TEST_CASE("select: a sphere light is chosen from the sphere's own rows") {
 
 TEST_CASE("select: quality.method is honoured, and an unknown one rejected") {
     Scene s = scene_of({polygon(4)}, {material(Distribution::Ggx, 0.2)});
-    s.method = "exact";
+    s.quality.method = "exact";
     Selected sel = select(s);
     INFO(sel.all());
+    // exact's default is fp64, which a scene allows only when it says so.
+    CHECK(sel.names() ==
+          std::vector<std::string>{"dist=ggx,method=exact,light=polygon,precision=fp32"});
+    s.quality.fp64 = true;
+    sel = select(s);
+    INFO(sel.all());
     CHECK(sel.names() == std::vector<std::string>{"dist=ggx,method=exact,light=polygon"});
+    s.quality.fp64.reset();
 
     // With max_error as well: the cheapest of that method meeting it.
-    s.method = "ltc";
-    s.max_error = 0.015;
+    s.quality.method = "ltc";
+    s.quality.max_error = 0.015;
     sel = select(s);
     INFO(sel.all());
     CHECK(sel.names() ==
           std::vector<std::string>{"dist=ggx,method=ltc,light=polygon,horizon=proxy"});
 
-    s.method = "magic";
+    s.quality.method = "magic";
     sel = select(s);
     INFO(sel.all());
     CHECK_FALSE(sel.variants);
@@ -209,7 +216,7 @@ TEST_CASE("select: quality.method is honoured, and an unknown one rejected") {
 
     // A method the pair has no family for.
     s = scene_of({polygon(4)}, {material(Distribution::Ggx, 0.2)});
-    s.method = "arvo";
+    s.quality.method = "arvo";
     sel = select(s);
     INFO(sel.all());
     CHECK_FALSE(sel.variants);
@@ -218,6 +225,7 @@ TEST_CASE("select: quality.method is honoured, and an unknown one rejected") {
 
 TEST_CASE("select: max_error picks the cheapest variant that meets it") {
     Scene s = scene_of({polygon(4)}, {material(Distribution::Ggx, 0.2)});
+    s.quality.fp64 = true;  // the hand table's exact row is fp64
     struct Want {
         double max_error;
         const char* name;
@@ -227,7 +235,7 @@ TEST_CASE("select: max_error picks the cheapest variant that meets it") {
                           Want{0.001, "dist=ggx,method=exact,light=polygon"},
                           // point meets it on specular and diffuse alike only here
                           Want{0.6, "dist=ggx,method=point,light=polygon"}}) {
-        s.max_error = w.max_error;
+        s.quality.max_error = w.max_error;
         const Selected sel = select(s);
         INFO("max_error " << w.max_error << "\n" << sel.all());
         CHECK(sel.names() == std::vector<std::string>{w.name});
@@ -237,7 +245,8 @@ TEST_CASE("select: max_error picks the cheapest variant that meets it") {
 
 TEST_CASE("select: when nothing meets max_error, the most accurate, with a warning") {
     Scene s = scene_of({polygon(4)}, {material(Distribution::Ggx, 0.2)});
-    s.max_error = 1e-6;
+    s.quality.max_error = 1e-6;
+    s.quality.fp64 = true;
     const Selected sel = select(s);
     INFO(sel.all());
     CHECK(sel.names() == std::vector<std::string>{"dist=ggx,method=exact,light=polygon"});
@@ -249,7 +258,7 @@ TEST_CASE("select: rows measured at a non-default verts or sided are not ranked"
     // phong arvo verts=3 claims 1e-9 at 100 instructions; a triangle scene must not take it
     // as the generic measurement.
     Scene s = scene_of({polygon(3)}, {material(Distribution::Phong, 40)});
-    s.max_error = 0.01;
+    s.quality.max_error = 0.01;
     const Selected sel = select(s);
     INFO(sel.all());
     CHECK(sel.names() ==
@@ -272,7 +281,7 @@ TEST_CASE("select: the shipped measured data parses and its choices meet max_err
             Scene s = scene_of(
                 {polygon(4)},
                 {material(d, d == Distribution::Phong || d == Distribution::Blinn ? 40.0 : 0.2)});
-            s.max_error = max_error;
+            s.quality.max_error = max_error;
             const Selected sel = select(s, q);
             INFO(to_string(d) << " max_error " << max_error << "\n" << sel.all());
             REQUIRE(sel.variants);
@@ -290,7 +299,7 @@ TEST_CASE("select: the shipped measured data parses and its choices meet max_err
                     auto p = parse_variant(r.variant, {});
                     return p && p->dist == d && p->light == LightType::Polygon &&
                            p->sided == Variant{}.sided && p->verts == Variant{}.verts &&
-                           r.error() <= max_error;
+                           effective_precision(*p) != Precision::Fp64 && r.error() <= max_error;
                 });
             if (any_meets) {
                 CHECK(m->error() <= max_error);
@@ -298,6 +307,165 @@ TEST_CASE("select: the shipped measured data parses and its choices meet max_err
             } else {
                 CHECK(sel.count(Severity::Warning) == 1);
             }
+        }
+    }
+}
+
+namespace {
+
+GpuCost gpu_of(std::uint64_t cost, double ratio) {
+    GpuCost g;
+    g.family = "navi21";
+    g.mesa = "hand-made";
+    g.wave = 64;
+    g.cost = g.inverse_throughput = cost;
+    g.ratio_to_point = ratio;
+    return g;
+}
+
+// The hand table with GPU figures that order the rows unlike their x86 counts.
+QualityData gpu_table() {
+    QualityData q = hand_table();
+    for (auto& m : q.variants) {
+        if (m.variant == "dist=ggx,method=ltc,light=polygon") m.gpu = gpu_of(1500, 3.0);
+        if (m.variant == "dist=ggx,method=ltc,light=polygon,horizon=proxy") m.gpu = gpu_of(1700, 3.4);
+        if (m.variant == "dist=ggx,method=exact,light=polygon") m.gpu = gpu_of(2000000, 4000);
+        if (m.variant == "dist=phong,method=lorentz,light=polygon") m.gpu = gpu_of(16000, 35);
+        if (m.variant == "dist=phong,method=pearson,light=polygon") m.gpu = gpu_of(18000, 40);
+    }
+    q.variants.push_back(row("dist=ggx,method=exact,light=polygon,precision=fp32", 2e-4, 30000));
+    q.variants.back().gpu = gpu_of(40000, 80);
+    q.variants.push_back(row("dist=ggx,method=lorentz,light=polygon", 0.03, 5000));
+    q.variants.back().gpu = gpu_of(30000, 60);
+    q.variants.push_back(row("dist=phong,method=exact,light=polygon,precision=fp32", 1e-6, 9000));
+    q.variants.back().gpu = gpu_of(12000, 28);
+    return q;
+}
+
+}  // namespace
+
+TEST_CASE("select: rows rank by GPU cost where they have it") {
+    Scene s = scene_of({polygon(4)}, {material(Distribution::Ggx, 0.2)});
+    // By x86 count the proxy LTC (4500) is cheaper than the clipped one (4800); by GPU
+    // cost (1700 against 1500) it is not.
+    s.quality.max_error = 0.02;
+    Selected sel = select(s, gpu_table());
+    INFO(sel.all());
+    CHECK(sel.names() == std::vector<std::string>{"dist=ggx,method=ltc,light=polygon"});
+    REQUIRE(sel.variants);
+    CHECK_THAT(sel.variants->at(0).why, Contains("GPU cost 1500") && Contains("navi21"));
+    // Phong at 0.01: pearson (18000) and lorentz (0.008, 16000) meet it; exact fp32
+    // (12000) is cheaper than both and more accurate.
+    s = scene_of({polygon(4)}, {material(Distribution::Phong, 40)});
+    s.quality.max_error = 0.01;
+    sel = select(s, gpu_table());
+    INFO(sel.all());
+    CHECK(sel.names() == std::vector<std::string>{
+                             "dist=phong,method=exact,light=polygon,sided=one,verts=4,precision=fp32"});
+}
+
+TEST_CASE("select: no fp64 variant unless the scene's precision is fp64") {
+    Scene s = scene_of({polygon(4)}, {material(Distribution::Ggx, 0.2)});
+    s.quality.max_error = 1e-4;
+    // Only the fp64 exact row meets 1e-4; in fp32 the most accurate allowed, with a
+    // warning that names the error it reaches.
+    Selected sel = select(s, gpu_table());
+    INFO(sel.all());
+    CHECK(sel.names() ==
+          std::vector<std::string>{"dist=ggx,method=exact,light=polygon,precision=fp32"});
+    REQUIRE(sel.count(Severity::Warning) == 1);
+    CHECK_THAT(sel.diags[0].message, Contains("0.0002") && Contains("0.0001"));
+    s.quality.fp64 = true;
+    sel = select(s, gpu_table());
+    INFO(sel.all());
+    CHECK(sel.names() == std::vector<std::string>{"dist=ggx,method=exact,light=polygon"});
+    CHECK(sel.count(Severity::Warning) == 0);
+}
+
+TEST_CASE("select: tables, patented and exclude narrow the choice") {
+    Scene s = scene_of({polygon(4)}, {material(Distribution::Ggx, 0.2)});
+    s.quality.max_error = 0.05;
+    s.quality.tables = false;  // no ltc: lorentz (0.03) is then the cheapest meeting 0.05
+    Selected sel = select(s, gpu_table());
+    INFO(sel.all());
+    CHECK(sel.names() == std::vector<std::string>{"dist=ggx,method=lorentz,light=polygon"});
+    s.quality.patented = false;  // nor the peak functions: exact in fp32
+    sel = select(s, gpu_table());
+    INFO(sel.all());
+    CHECK(sel.names() ==
+          std::vector<std::string>{"dist=ggx,method=exact,light=polygon,precision=fp32"});
+    s.quality.tables.reset();
+    s.quality.patented.reset();
+    s.quality.exclude = {"ltc", "lorentz"};
+    sel = select(s, gpu_table());
+    INFO(sel.all());
+    CHECK(sel.names() ==
+          std::vector<std::string>{"dist=ggx,method=exact,light=polygon,precision=fp32"});
+    // quality.method naming a refused method is an error that says which rule refused it.
+    s.quality.exclude.clear();
+    s.quality.max_error.reset();
+    s.quality.method = "ltc";
+    s.quality.tables = false;
+    sel = select(s, gpu_table());
+    INFO(sel.all());
+    CHECK_FALSE(sel.variants);
+    REQUIRE(sel.count(Severity::Error) == 1);
+    CHECK_THAT(sel.diags[0].message, Contains("quality.tables"));
+    // A misspelt exclude name is an error, not silently nothing excluded.
+    s.quality = {};
+    s.quality.exclude = {"ltcs"};
+    sel = select(s, gpu_table());
+    INFO(sel.all());
+    CHECK_FALSE(sel.variants);
+    CHECK_THAT(sel.diags.at(0).message, Contains("quality.exclude") && Contains("'ltcs'"));
+}
+
+TEST_CASE("select: a material's quality overrides the scene's for its distribution") {
+    Scene s = scene_of({polygon(4)},
+                       {material(Distribution::Ggx, 0.2), material(Distribution::Phong, 40)});
+    s.quality.max_error = 0.02;
+    SceneQuality strict;
+    strict.max_error = 1e-4;
+    strict.fp64 = true;
+    s.material_quality = {strict, std::nullopt};
+    Selected sel = select(s, gpu_table());
+    INFO(sel.all());
+    CHECK(sel.names() ==
+          std::vector<std::string>{"dist=phong,method=exact,light=polygon,sided=one,verts=4,precision=fp32",
+                                   "dist=ggx,method=exact,light=polygon"});
+    // Two materials of one distribution: the stricter max_error; different methods are an
+    // error naming both.
+    s = scene_of({polygon(4)}, {material(Distribution::Ggx, 0.2), material(Distribution::Ggx, 0.5)});
+    SceneQuality a, b;
+    a.method = "ltc";
+    b.method = "exact";
+    s.material_quality = {a, b};
+    sel = select(s, gpu_table());
+    INFO(sel.all());
+    CHECK_FALSE(sel.variants);
+    CHECK_THAT(sel.diags.at(0).message, Contains("materials 0 and 1") && Contains("'exact'"));
+}
+
+TEST_CASE("select: the shipped data never selects fp64 at the default quality") {
+    const QualityData& q = shipped_quality();
+    const Light lights[] = {polygon(4), sphere()};
+    for (Distribution d :
+         {Distribution::Phong, Distribution::Blinn, Distribution::Beckmann, Distribution::Ggx}) {
+        for (const Light& l : lights) {
+            Scene s = scene_of(
+                {l}, {material(d, d == Distribution::Phong || d == Distribution::Blinn ? 40.0 : 0.2)});
+            Selected sel = select(s, q);
+            INFO(to_string(d) << " " << to_string(l.type) << "\n" << sel.all());
+            REQUIRE(sel.variants);
+            CHECK(effective_precision(sel.variants->at(0).variant) != Precision::Fp64);
+            // A scene that allows fp64 and asks for more than any variant reaches gets the
+            // most accurate: an exact one.
+            s.quality.fp64 = true;
+            s.quality.max_error = 1e-7;
+            sel = select(s, q);
+            INFO(sel.all());
+            REQUIRE(sel.variants);
+            CHECK(sel.variants->at(0).variant.method == Method::Exact);
         }
     }
 }

@@ -23,19 +23,27 @@ struct SelectedVariant {
 };
 
 // One variant per (light type, distribution) of the scene, ordered by light type, then
-// distribution. Each is:
+// distribution. The quality of a pair is effective_quality(scene, its distribution):
+// the scene's, overridden by its materials' own. Only variants it allows count
+// (precision fp32 unless it says fp64, no tables if tables is false, no patented peak
+// function if patented is false, no excluded method). Each is:
 // - the method: with quality.method alone, that method with every other key at its
-//   default; otherwise, among the measured variants of the pair (of that method when
-//   quality.method is also given), the cheapest by lavapipe x86 instruction count whose
-//   MeasuredVariant::error() is at most max_error (kDefaultMaxError without quality);
-//   when none is, the most accurate, with a warning. Only rows measured at the default
-//   sided and verts count (those ran on every case); the data is per variant, pooled
-//   over the public case sets, so the scene's parameter range cannot narrow it.
+//   default (precision=fp32 where fp64 is not allowed and the family offers it);
+//   otherwise, among the allowed measured variants of the pair (of that method when
+//   quality.method is also given), the cheapest by GPU cost (CONTRACT.md 4: the
+//   MeasuredVariant's gpu.cost; rows without GPU figures rank after, by x86-64 count)
+//   whose MeasuredVariant::error() is at most max_error (kDefaultMaxError without one);
+//   when none is, the most accurate allowed, with a warning naming the error it reaches.
+//   Only rows measured at the default sided and verts count (those ran on every case);
+//   the data is per variant, pooled over the public case sets, so the scene's parameter
+//   range cannot narrow it.
 // - specialised: sided=one when every light of its type is one-sided, two when every one
 //   is two-sided (else any), and verts the smallest the family offers that holds the
 //   scene's largest polygon; a value the family does not offer stays at its default.
 // nullopt, with an error per problem, when a pair has no implemented variant (or none of
-// quality.method), quality.method is no method, or no measured row fits a pair.
+// quality.method), quality.method or an exclude name is no method, the method asked for
+// is one the quality refuses, materials of one distribution ask for different methods,
+// or no allowed measured row fits a pair.
 std::optional<std::vector<SelectedVariant>> select_variants(const Scene& scene,
                                                             const QualityData& measured,
                                                             const DiagnosticConsumer& diag);
