@@ -116,7 +116,7 @@ int run_generate(const GenerateArgs& args, const DiagnosticConsumer& diag) {
     const Variant& v = variants.front();
     const std::string glsl = generate_source(v, Language::Glsl);
     // Compile even when only GLSL is asked for: a written shader is a valid shader.
-    auto spirv = build_spirv(v, !args.no_opt, diag, KernelOutputs::All);
+    auto spirv = generated_kernel_spirv(v, diag, !args.no_opt);
     if (!spirv) return kRuntime;
     if (args.glsl.empty() && args.spv.empty()) fmt::print("{}", glsl);
     if (!args.glsl.empty() && !write_file_atomic(args.glsl, glsl, diag)) return kRuntime;

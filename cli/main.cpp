@@ -33,6 +33,8 @@
 #include "generate.hpp"
 #include "print_diagnostic.hpp"
 #include "generate_scene.hpp"
+#include "gpu_cost.hpp"
+#include "gpu_family.hpp"
 #include "quality.hpp"
 #include "progress.hpp"
 #include "render.hpp"
@@ -103,8 +105,9 @@ int run_compare(const std::string& ref_path, const std::string& out_path, double
 
 int run_bench(const std::string& cases_path, const std::vector<std::string>& names,
               const std::vector<double>& exponents, const std::string& backend,
-              std::size_t min_cases, int repeats) {
+              std::size_t min_cases, int repeats, const std::string& gpu_family) {
     arealight::BenchOptions opt;
+    opt.gpu->family = gpu_family;
     for (const auto& name : names) {
         auto v = arealight::parse_variant(name, print_diagnostic);
         if (!v) return kBadInput;
@@ -158,6 +161,7 @@ struct ReportArgs {
     int repeats = 7;
     double dispatch_ms = 20;
     unsigned threads = 1;
+    std::string gpu_family = arealight::GpuCostOptions{}.family;
 };
 
 // The options report and sweep share.
@@ -175,6 +179,7 @@ void add_measure_options(CLI::App* cmd, ReportArgs& a) {
     cmd->add_option("--threads", a.threads, "oracle threads")
         ->check(CLI::Range(1u, 256u))
         ->capture_default_str();
+    arealight::cli::add_gpu_family_option(cmd, a.gpu_family);
 }
 
 // report and sweep: measure, then write every file (nothing is written on failure).
@@ -195,6 +200,7 @@ int run_report(const ReportArgs& a, bool sweep) {
     opt.repeats = a.repeats;
     opt.dispatch_seconds = a.dispatch_ms * 1e-3;
     opt.threads = a.threads;
+    opt.gpu->family = a.gpu_family;
     if (sweep) {
         auto bad = [&](const std::string& m) {
             print_diagnostic({arealight::Severity::Error, "", 0, "sweep: " + m});
@@ -365,6 +371,8 @@ int main(int argc, char** argv) {
     bench->add_option("--repeat", repeats, "timed runs per variant")
         ->check(CLI::Range(1, 1000))
         ->capture_default_str();
+    std::string bench_gpu_family = arealight::GpuCostOptions{}.family;
+    arealight::cli::add_gpu_family_option(bench, bench_gpu_family);
 
     ReportArgs rep, swp;
     rep.threads = swp.threads = threads;
@@ -375,8 +383,11 @@ int main(int argc, char** argv) {
         "point light of the same distribution and shape (dist=<same>,method=point, same "
         "sided/verts where that variant exists, else the family's default shape), error "
         "against the oracle per quantity: diffuse, specular, and moment (phong) or ndf "
-        "(microfacet); the plots' error is the larger relL2 of specular and moment or ndf. "
-        "Writes report.json, report.md, report.svg, report_x86.svg");
+        "(microfacet); the plots' error is the larger relL2 of specular and moment or ndf; "
+        "and the GPU cost (RADV/ACO on a null device, CONTRACT.md 4) with its ratio to the "
+        "point light, the cost of the front and report.svg where RADV is available. Writes "
+        "report.json, report.md, report.svg, report_time.svg (with the GPU cost), "
+        "report_x86.svg");
     add_measure_options(report, rep);
     report->add_option("--ref", rep.refs,
                        "oracle results of the cases (repeatable); default: computed here");
@@ -414,6 +425,8 @@ int main(int argc, char** argv) {
     auto* scene_variants = arealight::cli::add_scene_variants_command(app, scene_args);
     arealight::cli::RenderArgs render_args;
     auto* render = arealight::cli::add_render_command(app, render_args);
+    arealight::cli::GpuCostArgs gpu_cost_args;
+    auto* gpu_cost = arealight::cli::add_gpu_cost_command(app, gpu_cost_args);
     arealight::cli::CompileArgs compile_args;
     auto* compile = arealight::cli::add_compile_command(app, compile_args);
 
@@ -434,7 +447,8 @@ int main(int argc, char** argv) {
     if (eval->parsed()) return run_eval(cases_path, variant, backend, device, out_path);
     if (generate->parsed()) return arealight::cli::run_generate(generate_args, print_diagnostic);
     if (bench->parsed())
-        return run_bench(cases_path, bench_variants, exponents, backend, min_cases, repeats);
+        return run_bench(cases_path, bench_variants, exponents, backend, min_cases, repeats,
+                         bench_gpu_family);
     if (compare->parsed()) return run_compare(ref_path, out_path, floor);
     if (reference->parsed()) return run_reference(cases_path, out_path, rel_tol, threads, table);
     if (fit_ltc->parsed()) return arealight::cli::run_fit_ltc(fit_args);
@@ -442,5 +456,6 @@ int main(int argc, char** argv) {
     if (scene_variants->parsed()) return arealight::cli::run_scene_variants(scene_args);
     if (render->parsed()) return arealight::cli::run_render(render_args);
     if (compile->parsed()) return arealight::cli::run_compile(compile_args);
+    if (gpu_cost->parsed()) return arealight::cli::run_gpu_cost(gpu_cost_args);
     return kUsage;
 }

@@ -1,6 +1,9 @@
 #include "quality.hpp"
 
+#include <chrono>
+
 #include "arealight/atomic_file.hpp"
+#include "gpu_family.hpp"
 #include "arealight/quality.hpp"
 #include "arealight/variant.hpp"
 #include "print_diagnostic.hpp"
@@ -18,6 +21,7 @@ CLI::App* add_quality_command(CLI::App& app, QualityArgs& args) {
         ->check(CLI::ExistingFile);
     cmd->add_option("--out", args.out, "quality file to write (data/quality/measured.json)")
         ->required();
+    add_gpu_family_option(cmd, args.gpu_family);
     return cmd;
 }
 
@@ -36,9 +40,27 @@ int run_quality(const QualityArgs& args) {
                  m.report + ": '" + m.variant + "' is not a variant of this arealight; left out"});
     }
     data->variants = std::move(kept);
+    // The GPU cost is deterministic and needs no lavapipe run: measured here from each
+    // variant itself, so that it follows the current templates and --gpu-family. Without
+    // RADV the reports' own gpu objects stay.
+    const auto t0 = std::chrono::steady_clock::now();
+    GpuCostOptions gopt;
+    gopt.family = args.gpu_family;
+    std::size_t measured = 0;
+    if (auto meter = GpuCostMeter::create(gopt, print_diagnostic)) {
+        for (auto& m : data->variants) {
+            const auto v = parse_variant(m.variant, {});
+            m.gpu = meter->measure(*v, print_diagnostic);
+            if (!m.gpu) return 3;
+            ++measured;
+        }
+    }
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (!write_file_atomic(args.out, format_quality(*data), print_diagnostic)) return 3;
-    std::fprintf(stderr, "quality: %zu variants from %zu reports; wrote %s\n",
-                 data->variants.size(), data->reports.size(), args.out.c_str());
+    std::fprintf(stderr, "quality: %zu variants from %zu reports (GPU cost of %zu in %.0f s); wrote %s\n",
+                 data->variants.size(), data->reports.size(), measured, seconds,
+                 args.out.c_str());
     return 0;
 }
 

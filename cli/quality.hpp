@@ -7,11 +7,14 @@
 #include <string>
 #include <vector>
 
+#include "arealight/gpu_cost.hpp"
+
 namespace arealight::cli {
 
 struct QualityArgs {
     std::vector<std::string> reports;
     std::string out;
+    std::string gpu_family = GpuCostOptions{}.family;
 };
 
 CLI::App* add_quality_command(CLI::App& app, QualityArgs& args);

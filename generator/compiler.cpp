@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "file_includer.hpp"
+#include "spirv_tools_severity.hpp"
 
 namespace arealight {
 namespace {
@@ -124,21 +125,6 @@ void report_info_log(const char* log, const std::string& source_name, Reporter& 
         has_pending = true;
     }
     flush();
-}
-
-Severity severity_of(spv_message_level_t level) {
-    switch (level) {
-        case SPV_MSG_FATAL:
-        case SPV_MSG_INTERNAL_ERROR:
-        case SPV_MSG_ERROR:
-            return Severity::Error;
-        case SPV_MSG_WARNING:
-            return Severity::Warning;
-        case SPV_MSG_INFO:
-        case SPV_MSG_DEBUG:
-            return Severity::Note;
-    }
-    return Severity::Error;
 }
 
 // SPIRV-Tools drops messages unless a consumer is installed (libspirv.hpp SetMessageConsumer).

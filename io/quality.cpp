@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "arealight/gpu_cost_json.hpp"
 #include "case_fields.hpp"
 
 namespace arealight {
@@ -32,7 +33,7 @@ std::optional<double> finite(const json& obj, const char* key) {
 
 // One report row, or nullopt with the reason why it is left out.
 std::optional<MeasuredVariant> from_row(const json& row, const std::string& report,
-                                        std::string& why) {
+                                        std::string& why, std::string& warning) {
     MeasuredVariant m;
     m.report = report;
     auto name = row.find("variant");
@@ -49,6 +50,11 @@ std::optional<MeasuredVariant> from_row(const json& row, const std::string& repo
     m.x86_instructions = static_cast<std::size_t>(*x86);
     m.ratio_to_point = finite(row, "ratio_to_point").value_or(0.0);
     m.cases = static_cast<std::size_t>(finite(row, "cases").value_or(0.0));
+    if (auto g = row.find("gpu"); g != row.end()) {
+        std::string bad;
+        m.gpu = parse_gpu_cost(*g, bad);
+        if (!m.gpu) warning = "its gpu object is left out: " + bad;
+    }
     auto err = row.find("error");
     if (err == row.end() || !err->is_object()) {
         why = "has no error table";
@@ -135,8 +141,10 @@ std::optional<QualityData> quality_from_reports(const std::vector<std::string>& 
         }
         data.reports.push_back(path);
         for (std::size_t i = 0; i < rows->size(); ++i) {
-            std::string why;
-            auto m = (*rows)[i].is_object() ? from_row((*rows)[i], path, why) : std::nullopt;
+            std::string why, warning;
+            auto m = (*rows)[i].is_object() ? from_row((*rows)[i], path, why, warning)
+                                            : std::nullopt;
+            if (!warning.empty()) warn(diag, path, fmt::format("rows[{}]: {}", i, warning));
             if (m)
                 put(data, std::move(*m));
             else
@@ -162,6 +170,7 @@ std::string format_quality(const QualityData& data) {
         j["rel_l2"] = std::move(rel);
         j["x86_instructions"] = m.x86_instructions;
         j["ratio_to_point"] = m.ratio_to_point;
+        if (m.gpu) j["gpu"] = gpu_cost_json(*m.gpu);
         j["cases"] = m.cases;
         j["report"] = m.report;
         arr.push_back(std::move(j));
@@ -211,6 +220,11 @@ std::optional<QualityData> parse_quality(const std::string& text, const std::str
         m.x86_instructions = static_cast<std::size_t>(number("x86_instructions"));
         m.ratio_to_point = number("ratio_to_point");
         m.cases = static_cast<std::size_t>(number("cases"));
+        if (auto g = j.find("gpu"); g != j.end()) {
+            std::string bad;
+            m.gpu = parse_gpu_cost(*g, bad);
+            if (!m.gpu) rep.error(where, "gpu", bad);
+        }
         auto rel = j.find("rel_l2");
         if (rel == j.end() || !rel->is_object()) {
             rep.error(where, "rel_l2", "must be an object of numbers");

@@ -36,6 +36,15 @@ std::optional<std::vector<BenchRow>> benchmark(Evaluator& ev, const CaseSet& cas
             x86_of.emplace(*words, x86_counts[k]);
         }
     }
+    std::vector<std::optional<GpuCost>> gpu(opt.variants.size());
+    if (opt.gpu) {
+        if (auto meter = GpuCostMeter::create(*opt.gpu, diag)) {
+            for (std::size_t k = 0; k < opt.variants.size(); ++k) {
+                gpu[k] = meter->measure(opt.variants[k], diag);
+                if (!gpu[k]) return std::nullopt;
+            }
+        }
+    }
     std::vector<double> exponents = opt.exponents;
     if (exponents.empty()) exponents.push_back(0.0);
     const std::size_t total = exponents.size() * opt.variants.size() * opt.repeats;
@@ -82,7 +91,7 @@ std::optional<std::vector<BenchRow>> benchmark(Evaluator& ev, const CaseSet& cas
         }
         for (std::size_t k = 0; k < opt.variants.size(); ++k) {
             rows.push_back({canonical_name(opt.variants[k]), N, counts[k], medians[k],
-                            medians[k] / medians[0], spirv_counts[k], x86_counts[k]});
+                            medians[k] / medians[0], spirv_counts[k], x86_counts[k], gpu[k]});
         }
     }
     return rows;
@@ -91,13 +100,28 @@ std::optional<std::vector<BenchRow>> benchmark(Evaluator& ev, const CaseSet& cas
 std::string format_bench(const std::vector<BenchRow>& rows) {
     std::size_t w = 7;
     for (const auto& r : rows) w = std::max(w, r.variant.size());
-    std::string t = fmt::format("{:<{}} {:>9} {:>8} {:>12} {:>9} {:>8} {:>8}\n", "variant", w,
-                                "exponent", "cases", "ns/case", "x base", "SPIR-V", "x86-64");
+    std::string t = fmt::format("{:<{}} {:>9} {:>8} {:>12} {:>9} {:>8} {:>8} {:>9} {:>8} {:>6} {:>6}\n",
+                                "variant", w, "exponent", "cases", "ns/case", "x base", "SPIR-V",
+                                "x86-64", "GPU cost", "x point", "VGPRs", "waves");
     for (const auto& r : rows) {
-        t += fmt::format("{:<{}} {:>9} {:>8} {:>12.1f} {:>9.2f} {:>8} {:>8}\n", r.variant, w,
-                         r.exponent > 0 ? fmt::format("{:g}", r.exponent) : "case", r.cases,
-                         r.median_ns_per_case, r.ratio, r.spirv_instructions, r.x86_instructions);
+        auto gpu = [&](auto field) { return r.gpu ? fmt::format("{}", field(*r.gpu)) : "-"; };
+        t += fmt::format(
+            "{:<{}} {:>9} {:>8} {:>12.1f} {:>9.2f} {:>8} {:>8} {:>9} {:>8} {:>6} {:>6}\n",
+            r.variant, w, r.exponent > 0 ? fmt::format("{:g}", r.exponent) : "case", r.cases,
+            r.median_ns_per_case, r.ratio, r.spirv_instructions, r.x86_instructions,
+            gpu([](const GpuCost& g) { return g.cost; }),
+            gpu([](const GpuCost& g) { return fmt::format("{:.2f}", g.ratio_to_point); }),
+            gpu([](const GpuCost& g) { return g.vgprs; }),
+            gpu([](const GpuCost& g) { return g.waves_per_simd; }));
     }
+    // Which compiler measured the GPU columns.
+    for (const auto& r : rows)
+        if (r.gpu) {
+            t += fmt::format("GPU cost: ACO inverse throughput (cycles per wave, loops unrolled "
+                             "where constant) on RADV {}, Mesa {}, wave{}\n",
+                             r.gpu->family, r.gpu->mesa, r.gpu->wave);
+            break;
+        }
     return t;
 }
 

@@ -87,6 +87,12 @@ std::optional<std::vector<uint32_t>> build_spirv(const Variant& v, bool optimize
     return build_spirv(v, generate_source(v, Language::Glsl, outputs), optimize, diag);
 }
 
+std::optional<std::vector<uint32_t>> generated_kernel_spirv(const Variant& v,
+                                                            const DiagnosticConsumer& diag,
+                                                            bool optimize) {
+    return build_spirv(v, optimize, diag, KernelOutputs::All);
+}
+
 std::optional<std::vector<uint32_t>> build_spirv(const Variant& v, const std::string& glsl,
                                                  bool optimize, const DiagnosticConsumer& diag) {
     const std::string name = canonical_name(v);

@@ -10,6 +10,7 @@
 #include <set>
 
 #include "arealight/compiler.hpp"
+#include "arealight/gpu_cost_json.hpp"
 #include "arealight/machine_code.hpp"
 #include "arealight/reference.hpp"
 #include "arealight/svg_plot.hpp"
@@ -138,26 +139,31 @@ const QuantityScore* find_score(const ReportRow& r, const std::string& q) {
     return nullptr;
 }
 
-// Rows on the error-cost front: no other row of the same value, distribution and
-// shape (so the same cases) is at most as costly and at most as wrong, and better
-// in one.
+bool has_gpu_ratio(const ReportRow& r) { return r.gpu && r.gpu->ratio_to_point > 0; }
+
+}  // namespace
+
 void mark_pareto(std::vector<ReportRow>& rows) {
+    const bool gpu = std::all_of(rows.begin(), rows.end(), has_gpu_ratio);
+    auto cost = [gpu](const ReportRow& r) { return gpu ? r.gpu->ratio_to_point : r.ratio; };
     for (auto& a : rows) {
-        a.pareto = std::isfinite(a.error()) && std::isfinite(a.ratio);
+        a.pareto = std::isfinite(a.error()) && std::isfinite(cost(a));
         if (!a.pareto) continue;
         for (const auto& b : rows) {
             if (&a == &b || b.value != a.value || b.variant.dist != a.variant.dist ||
                 b.variant.sided != a.variant.sided || b.variant.verts != a.variant.verts)
                 continue;
-            if (!std::isfinite(b.error()) || !std::isfinite(b.ratio)) continue;
-            if (b.ratio <= a.ratio && b.error() <= a.error() &&
-                (b.ratio < a.ratio || b.error() < a.error())) {
+            if (!std::isfinite(b.error()) || !std::isfinite(cost(b))) continue;
+            if (cost(b) <= cost(a) && b.error() <= a.error() &&
+                (cost(b) < cost(a) || b.error() < a.error())) {
                 a.pareto = false;
                 break;
             }
         }
     }
 }
+
+namespace {
 
 struct Packed {
     std::vector<float> data;
@@ -221,6 +227,10 @@ std::string second_quantity_name(const std::vector<const ReportRow*>& rows) {
 }
 
 }  // namespace
+
+bool Report::by_gpu_cost() const {
+    return !rows.empty() && std::all_of(rows.begin(), rows.end(), has_gpu_ratio);
+}
 
 double ReportRow::error() const {
     double e = -1;
@@ -301,6 +311,28 @@ std::optional<Report> run_report(Evaluator& ev, const CaseSet& cases, const Repo
         if (progress) progress("compile", k + 1, variants.size());
     }
 
+    // GPU cost, once per variant; a variant RADV fails on goes without (warned).
+    std::vector<std::optional<GpuCost>> gpu(variants.size());
+    auto as_warning = [&](const Diagnostic& d) {
+        if (!diag) return;
+        Diagnostic w = d;
+        if (w.severity == Severity::Error) w.severity = Severity::Warning;
+        diag(w);
+    };
+    if (opt.gpu) {
+        if (auto meter = GpuCostMeter::create(*opt.gpu, diag)) {
+            report.gpu_device = fmt::format("RADV {} (null device), Mesa {}", meter->family(),
+                                            meter->mesa());
+            for (std::size_t k = 0; k < variants.size(); ++k) {
+                gpu[k] = meter->measure(variants[k], as_warning);
+                if (!gpu[k] && diag)
+                    diag({Severity::Warning, "", 0,
+                          "report: " + canonical_name(variants[k]) + " has no gpu cost"});
+                if (progress) progress("gpu cost", k + 1, variants.size());
+            }
+        }
+    }
+
     std::size_t step = 0;
     const std::size_t steps = values.size() * variants.size();
     for (double value : values) {
@@ -346,6 +378,7 @@ std::optional<Report> run_report(Evaluator& ev, const CaseSet& cases, const Repo
             row.x86_instructions = x86[k];
             row.table_bytes = table_bytes[k];
             row.texture_fetches = fetches[k];
+            row.gpu = gpu[k];
             row.scores = score_results(ref, *out, opt.floor);
 
             const Variant base = baseline_of(v);
@@ -410,6 +443,7 @@ std::string report_json(const Report& r) {
     j["pattern"] = r.pattern;
     j["case_files"] = r.case_files;
     j["device"] = r.device;
+    if (!r.gpu_device.empty()) j["gpu_device"] = r.gpu_device;
     j["seconds"] = r.seconds;
     if (r.sweep()) {
         j["axis"] = to_string(r.axis);
@@ -425,6 +459,7 @@ std::string report_json(const Report& r) {
         o["cases"] = row.cases;
         o["spirv_instructions"] = row.spirv_instructions;
         o["x86_instructions"] = row.x86_instructions;
+        if (row.gpu) o["gpu"] = gpu_cost_json(*row.gpu);
         o["table_bytes"] = row.table_bytes;
         o["texture_fetches"] = row.texture_fetches;
         o["ns_per_case"] = row.ns_per_case;
@@ -471,37 +506,48 @@ std::string score_cell(const ReportRow& row, const std::string& q) {
     return cell;
 }
 
+// GPU cost | × point | VGPRs | waves, "–" each without one.
+std::string gpu_cells(const ReportRow& row) {
+    if (!row.gpu) return "– | – | – | –";
+    const GpuCost& g = *row.gpu;
+    return fmt::format("{} | {} | {} | {}", g.cost,
+                       g.ratio_to_point > 0 ? fmt::format("{:.2f}", g.ratio_to_point) : "–",
+                       g.spilled_vgprs ? fmt::format("{} ({} spilled)", g.vgprs, g.spilled_vgprs)
+                                       : fmt::format("{}", g.vgprs),
+                       g.waves_per_simd);
+}
+
 std::string table(const std::vector<const ReportRow*>& rows, const Report& r) {
     const std::string second = second_quantity_name(rows);
     std::string t;
     if (r.sweep()) {
         t += fmt::format(
-            "| variant | {} | cases | ns/case | × point | specular median / p95 / max / relL2 "
-            "| {} median / p95 / max / relL2 |\n",
+            "| variant | {} | cases | GPU cost | × point | VGPRs | waves | ns/case | time × point "
+            "| specular median / p95 / max / relL2 | {} median / p95 / max / relL2 |\n",
             r.symbol, second);
-        t += "|---|---:|---:|---:|---:|---|---|\n";
+        t += "|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---|\n";
     } else {
         t += fmt::format(
-            "| variant | cases | SPIR-V | x86-64 | tables | fetches | ns/case | × point | diffuse "
-            "relL2 | specular median / p95 / max / relL2 | {} median / p95 / max / relL2 | front "
-            "|\n",
+            "| variant | cases | GPU cost | × point | VGPRs | waves | SPIR-V | x86-64 | tables | "
+            "fetches | ns/case | time × point | diffuse relL2 | specular median / p95 / max / "
+            "relL2 | {} median / p95 / max / relL2 | front |\n",
             second);
-        t += "|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---|:---:|\n";
+        t += "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---|:---:|\n";
     }
     for (const ReportRow* row : rows) {
         const std::string q = second_quantity(row->variant);
         if (r.sweep()) {
-            t += fmt::format("| `{}` | {:g} | {} | {:.1f} | {:.2f} | {} | {} |\n", row->name,
-                             row->value, row->cases, row->ns_per_case, row->ratio,
-                             score_cell(*row, "specular"), score_cell(*row, q));
+            t += fmt::format("| `{}` | {:g} | {} | {} | {:.1f} | {:.2f} | {} | {} |\n", row->name,
+                             row->value, row->cases, gpu_cells(*row), row->ns_per_case,
+                             row->ratio, score_cell(*row, "specular"), score_cell(*row, q));
         } else {
             const QuantityScore* d = find_score(*row, "diffuse");
-            t += fmt::format("| `{}` | {} | {} | {} | {} | {} | {:.1f} | {:.2f} | {} | {} | {} | {} |\n",
-                             row->name, row->cases, row->spirv_instructions, row->x86_instructions,
-                             bytes_text(row->table_bytes), row->texture_fetches,
-                             row->ns_per_case, row->ratio, d ? g3(d->rel_l2) : "–",
-                             score_cell(*row, "specular"), score_cell(*row, q),
-                             row->pareto ? "●" : "");
+            t += fmt::format(
+                "| `{}` | {} | {} | {} | {} | {} | {} | {:.1f} | {:.2f} | {} | {} | {} | {} |\n",
+                row->name, row->cases, gpu_cells(*row), row->spirv_instructions,
+                row->x86_instructions, bytes_text(row->table_bytes), row->texture_fetches,
+                row->ns_per_case, row->ratio, d ? g3(d->rel_l2) : "–",
+                score_cell(*row, "specular"), score_cell(*row, q), row->pareto ? "●" : "");
         }
     }
     return t;
@@ -569,15 +615,26 @@ std::string report_markdown(const Report& r) {
         "<!-- generated by arealight {}; do not edit -->\n"
         "# arealight {}: `{}`\n\n"
         "Cases: {}. Device: {}. {} rows in {:.0f} s.\n\n{}"
-        "Time: median of repeated dispatches on the device, per case; × point is the ratio "
-        "to the point-light variant of the same distribution and shape (sided, verts), timed "
-        "interleaved with it. Error: |x − ref| / max(ref, 1e-3) against `arealight reference` "
-        "(median, p95, max) and relative L2, the metric of `shared/tools/score`; the second "
-        "quantity is moment for phong and ndf for the microfacet distributions. front: on the "
-        "error–cost Pareto front of its distribution and shape (error = the larger relL2 of "
-        "specular and moment or ndf).\n\n",
+        "{}"
+        "Time: median of repeated dispatches on the device, per case; time × point is the "
+        "ratio to the point-light variant of the same distribution and shape (sided, verts), "
+        "timed interleaved with it. Error: |x − ref| / max(ref, 1e-3) against `arealight "
+        "reference` (median, p95, max) and relative L2, the metric of `shared/tools/score`; "
+        "the second quantity is moment for phong and ndf for the microfacet distributions. "
+        "front: on the error–cost Pareto front of its distribution and shape (error = the "
+        "larger relL2 of specular and moment or ndf; cost = {}).\n\n",
         sweep ? "sweep" : "report", sweep ? "sweep" : "report", r.pattern, files, r.device,
-        r.rows.size(), r.seconds, over);
+        r.rows.size(), r.seconds, over,
+        r.gpu_device.empty()
+            ? std::string("GPU cost: not measured (no RADV).\n\n")
+            : fmt::format(
+                  "GPU cost: ACO's inverse throughput (cycles per wave) of the kernel of "
+                  "`arealight generate --spv`, compiled by {}, the larger of the module as "
+                  "written and with its constant-trip-count loops unrolled (CONTRACT.md 4); "
+                  "× point against the point light's, measured the same way; VGPRs (spilled) "
+                  "and waves per SIMD of the module as written.\n\n",
+                  r.gpu_device),
+        r.by_gpu_cost() ? "GPU cost × point" : "time × point");
     std::vector<const ReportRow*> all, shape;
     const Variant d;
     for (const auto& row : r.rows) {
@@ -623,28 +680,41 @@ std::vector<std::pair<std::string, std::string>> report_pictures(const Report& r
             rows = all;
             shape.clear();
         }
-        Plot p;
-        p.title = "Error against cost: " + r.pattern + shape;
-        p.x_label = "time per case / point light (lavapipe, median)";
-        p.y_label = error_label;
-        for (const auto& l : labels) {
-            PlotSeries s;
-            s.name = l;
-            s.color = color(l);
-            for (const ReportRow* row : rows)
-                if (method_label(row->variant, with_dist) == l)
-                    s.points.push_back({row->ratio, row->error(), row->name});
-            if (!s.points.empty()) p.series.push_back(s);
-        }
-        // One front per distribution is one polyline only when there is one.
-        if (!with_dist) {
-            for (const ReportRow* row : rows)
-                if (row->pareto) p.front.push_back({row->ratio, row->error(), row->name});
-            std::sort(p.front.begin(), p.front.end(),
-                      [](const PlotPoint& a, const PlotPoint& b) { return a.x < b.x; });
-            p.front_name = "Pareto front";
-        }
+        const bool gpu = r.by_gpu_cost();
+        // Error against one cost per row, the front drawn when it was marked on that cost.
+        auto cost_plot = [&](const std::string& x_label, auto cost, bool front) {
+            Plot p;
+            p.title = "Error against cost: " + r.pattern + shape;
+            p.x_label = x_label;
+            p.y_label = error_label;
+            for (const auto& l : labels) {
+                PlotSeries s;
+                s.name = l;
+                s.color = color(l);
+                for (const ReportRow* row : rows)
+                    if (method_label(row->variant, with_dist) == l)
+                        s.points.push_back({cost(*row), row->error(), row->name});
+                if (!s.points.empty()) p.series.push_back(s);
+            }
+            // One front per distribution is one polyline only when there is one.
+            if (front && !with_dist) {
+                for (const ReportRow* row : rows)
+                    if (row->pareto) p.front.push_back({cost(*row), row->error(), row->name});
+                std::sort(p.front.begin(), p.front.end(),
+                          [](const PlotPoint& a, const PlotPoint& b) { return a.x < b.x; });
+                p.front_name = "Pareto front";
+            }
+            return p;
+        };
+        auto time_ratio = [](const ReportRow& row) { return row.ratio; };
+        const std::string time_label = "time per case / point light (lavapipe, median)";
+        const Plot p =
+            gpu ? cost_plot("GPU cost / point light (" + r.gpu_device +
+                                ": ACO inverse throughput, loops unrolled where constant)",
+                            [](const ReportRow& row) { return row.gpu->ratio_to_point; }, true)
+                : cost_plot(time_label, time_ratio, true);
         out.emplace_back("report.svg", svg_plot(p));
+        if (gpu) out.emplace_back("report_time.svg", svg_plot(cost_plot(time_label, time_ratio, false)));
         // The same against the deterministic cost: lavapipe's x86-64 instruction count.
         Plot q = p;
         q.title = "Error against code size: " + r.pattern + shape;

@@ -11,6 +11,7 @@
 #include "arealight/compiler.hpp"
 #include "arealight/mirror_support.hpp"
 #include "arealight/vulkan_runner.hpp"
+#include "diagnostic_support.hpp"
 
 using namespace arealight;
 
@@ -34,14 +35,8 @@ void main() {
 }
 )";
 
-struct Collected {
-    std::string text;
-    DiagnosticConsumer consumer() {
-        return [this](const Diagnostic& d) {
-            text += std::string(to_string(d.severity)) + ": " + d.message + "\n";
-        };
-    }
-};
+using test::Collected;
+using test::compile;
 
 std::vector<uint32_t> compiled_shader() {
     Collected diag;
@@ -187,14 +182,6 @@ void main() {
     texels[2u * i + 1u] = textureLod(t1, uvs[i], 0.0);
 }
 )";
-
-std::vector<uint32_t> compile(const char* source, const char* name) {
-    Collected diag;
-    auto spirv = compile_glsl(source, name, CompileOptions{}, diag.consumer());
-    INFO(diag.text);
-    REQUIRE(spirv);
-    return *spirv;
-}
 
 // A table whose channels vary by O(1) from texel to texel (a quickly varying function,
 // so that filter weights show in the result), offset away from 0 so relative

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "arealight/evaluator.hpp"
+#include "arealight/gpu_cost.hpp"
 
 namespace arealight {
 
@@ -18,6 +19,9 @@ struct BenchOptions {
     // When set, SPIR-V and lavapipe x86-64 instruction counts are taken; the folder
     // must be MESA_SHADER_CACHE_DIR (see use_private_shader_cache).
     std::string shader_cache_dir;
+    // RADV's figures per variant (gpu_cost.hpp); nullopt: none. Without RADV the rows
+    // go without, after one warning.
+    std::optional<GpuCostOptions> gpu = GpuCostOptions{};
 };
 
 struct BenchRow {
@@ -28,6 +32,9 @@ struct BenchRow {
     double ratio = 0;                    // median / baseline median at the same exponent
     std::size_t spirv_instructions = 0;  // after optimization; 0 when not counted
     std::size_t x86_instructions = 0;    // lavapipe's JIT code; 0 when not counted
+    // The variant's GPU cost, ratio_to_point against its point light (baseline_of), not
+    // against the first variant; absent without RADV.
+    std::optional<GpuCost> gpu;
 };
 
 // nullopt (with a diagnostic) when a variant fails to build or run.

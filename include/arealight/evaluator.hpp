@@ -89,6 +89,12 @@ std::optional<std::vector<const Texture2D*>> variant_textures(const Variant& v,
 std::optional<std::vector<uint32_t>> build_spirv(const Variant& v, bool optimize,
                                                  const DiagnosticConsumer& diag,
                                                  KernelOutputs outputs = KernelOutputs::Shading);
+// The module `arealight generate --variant NAME --spv FILE` writes (CONTRACT.md 4):
+// the validation kernel with every output (KernelOutputs::All), optimized unless
+// `optimize` is false. What outside checks and the GPU cost (gpu_cost.hpp) measure.
+std::optional<std::vector<uint32_t>> generated_kernel_spirv(const Variant& v,
+                                                            const DiagnosticConsumer& diag,
+                                                            bool optimize = true);
 // Same, for GLSL text already stitched for `v` (tests inject broken templates).
 std::optional<std::vector<uint32_t>> build_spirv(const Variant& v, const std::string& glsl,
                                                  bool optimize, const DiagnosticConsumer& diag);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "arealight/diagnostics.hpp"
+#include "arealight/gpu_cost.hpp"
 
 namespace arealight {
 
@@ -23,6 +24,9 @@ struct MeasuredVariant {
     double error_rel_l2 = 0;
     std::size_t x86_instructions = 0;  // lavapipe's machine code for the shader
     double ratio_to_point = 0;         // time per case over the point baseline's, same run
+    // RADV's figures of the variant's kernel (gpu_cost.hpp); absent where RADV was not
+    // available. `arealight quality` measures it from the variant itself.
+    std::optional<GpuCost> gpu;
     std::size_t cases = 0;
     std::string report;  // the report file that measured it
 
@@ -41,7 +45,8 @@ struct QualityData {
 // Reads arealight-report/1 files into one table. A variant in several reports takes the
 // last one's row (in the order given), so a newer report listed later supersedes. A row
 // without an x86 count (a report run without a shader cache) or with a non-finite error is
-// left out with a warning. Reports written before error_rel_l2 existed get it as the
+// left out with a warning; a row's `gpu` object is kept when well formed (else dropped
+// with a warning). Reports written before error_rel_l2 existed get it as the
 // larger relL2 of the quantities other than diffuse, as the report computes it.
 std::optional<QualityData> quality_from_reports(const std::vector<std::string>& paths,
                                                 const DiagnosticConsumer& diag);

@@ -15,6 +15,7 @@
 #include "arealight/case.hpp"
 #include "arealight/diagnostics.hpp"
 #include "arealight/evaluator.hpp"
+#include "arealight/gpu_cost.hpp"
 #include "arealight/results.hpp"
 #include "arealight/score.hpp"
 #include "arealight/variant.hpp"
@@ -78,6 +79,9 @@ struct ReportOptions {
     // Oracle values by case id, when already computed for these cases (report only;
     // a sweep computes its own).
     std::optional<ResultSet> reference;
+    // RADV's figures per variant (gpu_cost.hpp); nullopt: none. Where RADV cannot be
+    // used the rows go without, after one warning.
+    std::optional<GpuCostOptions> gpu = GpuCostOptions{};
 };
 
 struct ReportRow {
@@ -92,12 +96,17 @@ struct ReportRow {
     std::size_t table_bytes = 0, texture_fetches = 0;
     double ns_per_case = 0;  // median over repeats
     double ratio = 0;        // ns_per_case / the baseline's, same run
+    // The GPU cost of the variant's kernel (ratio_to_point against the same baseline);
+    // absent without RADV.
+    std::optional<GpuCost> gpu;
     std::vector<QuantityScore> scores;
     // The error the plot and the Pareto front use: the larger relL2 of specular and
     // second_quantity (moment or ndf); diffuse is exact in every method but point,
     // whose larger error shows.
     double error() const;
-    bool pareto = false;  // on the error-cost front of its distribution, shape and value
+    // On the error-cost front of its distribution, shape and value; the cost is the
+    // GPU cost's ratio to the point light when every row has one, else the time ratio.
+    bool pareto = false;
 };
 
 struct Report {
@@ -109,12 +118,22 @@ struct Report {
     // "cos_theta_v"), its symbol in tables ("N", "α", "cos θ_v") and the plots'
     // axis label.
     std::string parameter, symbol, axis_label;
+    // What measured the rows' gpu objects ("RADV NAVI21, Mesa 22.3.6"); empty: nothing.
+    std::string gpu_device;
     std::vector<ReportRow> rows;  // enumerate_variants order; per value in a sweep
+    // Whether every row has a GPU cost with a ratio to its point light: the cost axis
+    // of the front and of report.svg.
+    bool by_gpu_cost() const;
     double seconds = 0;           // wall time of the whole run
     bool sweep() const { return axis != SweepAxis::None; }
 };
 
-// Phase name ("reference", "compile", "time"), done, total.
+// Sets each row's `pareto`: no other row of the same value, distribution and shape (so
+// the same cases) is at most as costly and at most as wrong, and better in one. Cost:
+// the GPU cost's ratio to the point light when every row has one, else the time ratio.
+void mark_pareto(std::vector<ReportRow>& rows);
+
+// Phase name ("reference", "compile", "gpu cost", "time"), done, total.
 using PhaseProgress = std::function<void(const std::string&, std::size_t, std::size_t)>;
 
 // nullopt, with a diagnostic, when the pattern matches nothing, a Param sweep's
@@ -126,11 +145,13 @@ std::optional<Report> run_report(Evaluator& ev, const CaseSet& cases, const Repo
 
 std::string report_json(const Report& r);
 std::string report_markdown(const Report& r);
-// The pictures, as (file name, SVG text): for a report, error (log) against time
+// The pictures, as (file name, SVG text): for a report, error (log) against cost
 // ratio to the point light (log), one point per variant, coloured by method, the
-// Pareto front drawn (report.svg), and error against x86-64 instruction count
-// (report_x86.svg); for a sweep, time ratio and error against the axis value,
-// one line per variant (sweep_time.svg, sweep_error.svg).
+// Pareto front drawn (report.svg: the GPU cost when by_gpu_cost(), else lavapipe
+// time), the same against lavapipe time (report_time.svg, only with the GPU cost),
+// and error against x86-64 instruction count (report_x86.svg); for a sweep, time ratio
+// and error against the axis value, one line per variant (sweep_time.svg,
+// sweep_error.svg).
 std::vector<std::pair<std::string, std::string>> report_pictures(const Report& r);
 
 }  // namespace arealight

@@ -1,0 +1,70 @@
+#include "gpu_cost.hpp"
+
+#include <fmt/format.h>
+
+#include <cstring>
+
+#include "arealight/gpu_cost_json.hpp"
+#include "arealight/read_file.hpp"
+#include "arealight/variant.hpp"
+#include "gpu_family.hpp"
+#include "print_diagnostic.hpp"
+
+namespace arealight::cli {
+
+CLI::App* add_gpu_cost_command(CLI::App& app, GpuCostArgs& args) {
+    auto* cmd = app.add_subcommand(
+        "gpu-cost",
+        "Print the GPU cost (RADV/ACO on a null device, CONTRACT.md 4) of variants' kernels "
+        "as `generate --spv` writes them, with their ratio to the point light, or of SPIR-V "
+        "files: one JSON line each");
+    cmd->add_option("--variant", args.variants, "variant name (repeatable)");
+    cmd->add_option("--spv", args.spv, "SPIR-V compute module (repeatable)")
+        ->check(CLI::ExistingFile);
+    add_gpu_family_option(cmd, args.gpu_family);
+    return cmd;
+}
+
+int run_gpu_cost(const GpuCostArgs& args) {
+    if (args.variants.empty() && args.spv.empty()) {
+        print_diagnostic({Severity::Error, "", 0, "gpu-cost: --variant or --spv is required"});
+        return 2;
+    }
+    std::vector<Variant> variants;
+    for (const auto& name : args.variants) {
+        auto v = parse_variant(name, print_diagnostic);
+        if (!v) return 1;
+        variants.push_back(*v);
+    }
+    GpuCostOptions opt;
+    opt.family = args.gpu_family;
+    auto meter = GpuCostMeter::create(opt, print_diagnostic);
+    if (!meter) return 3;
+    auto line = [](const std::string& key, const std::string& what, const GpuCost& c) {
+        nlohmann::ordered_json j;
+        j[key] = what;
+        j["gpu"] = gpu_cost_json(c);
+        fmt::print("{}\n", j.dump());
+    };
+    for (const auto& v : variants) {
+        auto c = meter->measure(v, print_diagnostic);
+        if (!c) return 3;
+        line("variant", canonical_name(v), *c);
+    }
+    for (const auto& path : args.spv) {
+        auto bytes = read_file(path, print_diagnostic);
+        if (!bytes) return 1;
+        if (bytes->size() % 4 != 0) {
+            print_diagnostic({Severity::Error, path, 0, path + ": not a whole number of words"});
+            return 1;
+        }
+        std::vector<uint32_t> words(bytes->size() / 4);
+        if (!words.empty()) std::memcpy(words.data(), bytes->data(), bytes->size());
+        auto c = meter->measure(words, print_diagnostic);
+        if (!c) return 3;
+        line("file", path, *c);
+    }
+    return 0;
+}
+
+}  // namespace arealight::cli

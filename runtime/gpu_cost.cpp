@@ -1,0 +1,176 @@
+#include "arealight/gpu_cost.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <utility>
+
+#include "arealight/evaluator.hpp"
+#include "arealight/report.hpp"
+#include "arealight/unroll_loops.hpp"
+#include "arealight/variant.hpp"
+#include "radv_device.hpp"
+
+namespace arealight {
+namespace {
+
+// RADV's statistic names (Mesa 22.3, src/amd/vulkan: radv_GetPipelineExecutableStatisticsKHR).
+constexpr const char* kInstructions = "Instructions";
+constexpr const char* kVgprs = "VGPRs";
+constexpr const char* kSpilledVgprs = "Spilled VGPRs";
+constexpr const char* kScratch = "Scratch size";
+constexpr const char* kLatency = "Latency";
+constexpr const char* kInverseThroughput = "Inverse Throughput";
+constexpr const char* kWavesPerSimd = "Subgroups per SIMD";
+
+// "Mesa 22.3.6" (VkPhysicalDeviceDriverProperties::driverInfo) -> "22.3.6".
+std::string mesa_version(const std::string& driver_info) {
+    const std::string prefix = "Mesa ";
+    return driver_info.rfind(prefix, 0) == 0 ? driver_info.substr(prefix.size()) : driver_info;
+}
+
+}  // namespace
+
+const std::vector<std::string>& radv_families() {
+    // Mesa 22.3's ac_get_family_name table (what the null winsys compares with).
+    static const std::vector<std::string> names = {
+        "tahiti",    "pitcairn",  "verde",     "oland",    "hainan",     "bonaire",   "hawaii",
+        "kaveri",    "kabini",    "iceland",   "tonga",    "carrizo",    "fiji",      "stoney",
+        "polaris10", "polaris11", "polaris12", "vegam",    "vega10",     "vega12",    "vega20",
+        "raven",     "raven2",    "renoir",    "arcturus", "aldebaran",  "navi10",    "navi12",
+        "navi14",    "navi21",    "navi22",    "navi23",   "navi24",     "vangogh",   "rembrandt",
+        "gfx1036",   "gfx1100",   "gfx1101",   "gfx1102",  "gfx1103_r1", "gfx1103_r2"};
+    return names;
+}
+
+bool is_radv_family(const std::string& name) {
+    std::string lower = name;
+    std::transform(lower.begin(), lower.end(), lower.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const auto& all = radv_families();
+    return std::find(all.begin(), all.end(), lower) != all.end();
+}
+
+struct GpuCostMeter::Impl {
+    std::unique_ptr<RadvDevice> device;
+    std::string mesa;
+    // RADV statistics by module: the unrolled module of a loop-free kernel is often
+    // the module itself, and a baseline serves many variants.
+    std::map<std::vector<uint32_t>, RadvStatistics> compiled;
+    std::map<std::string, std::vector<uint32_t>> kernels;  // by canonical variant name
+
+    const RadvStatistics* compile(const std::vector<uint32_t>& spirv,
+                                  const DiagnosticConsumer& diag) {
+        auto it = compiled.find(spirv);
+        if (it == compiled.end()) {
+            auto stats = device->compile(spirv, diag);
+            if (!stats) return nullptr;
+            it = compiled.emplace(spirv, std::move(*stats)).first;
+        }
+        return &it->second;
+    }
+
+    const std::vector<uint32_t>* kernel(const Variant& v, const DiagnosticConsumer& diag) {
+        const std::string name = canonical_name(v);
+        auto it = kernels.find(name);
+        if (it == kernels.end()) {
+            auto words = generated_kernel_spirv(v, diag);
+            if (!words) return nullptr;
+            it = kernels.emplace(name, std::move(*words)).first;
+        }
+        return &it->second;
+    }
+};
+
+GpuCostMeter::GpuCostMeter(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+GpuCostMeter::~GpuCostMeter() = default;
+
+std::unique_ptr<GpuCostMeter> GpuCostMeter::create(const GpuCostOptions& opt,
+                                                   const DiagnosticConsumer& diag) {
+    auto device = RadvDevice::create(opt.family, opt.icd, diag);
+    if (!device) return nullptr;
+    auto impl = std::make_unique<Impl>();
+    impl->mesa = mesa_version(device->driver_info());
+    impl->device = std::move(device);
+    return std::unique_ptr<GpuCostMeter>(new GpuCostMeter(std::move(impl)));
+}
+
+const std::string& GpuCostMeter::family() const {
+    return impl_->device->family();
+}
+const std::string& GpuCostMeter::mesa() const {
+    return impl_->mesa;
+}
+
+std::optional<GpuCost> GpuCostMeter::measure(const std::vector<uint32_t>& spirv,
+                                             const DiagnosticConsumer& diag) {
+    const RadvStatistics* written = impl_->compile(spirv, diag);
+    if (!written) return std::nullopt;
+    const auto unrolled_words = unroll_constant_loops(spirv, diag);
+    if (!unrolled_words) return std::nullopt;
+    const RadvStatistics* unrolled = impl_->compile(*unrolled_words, diag);
+    if (!unrolled) return std::nullopt;
+
+    std::string missing;
+    auto stat = [&](const RadvStatistics& s, const char* name) -> uint64_t {
+        auto it = s.values.find(name);
+        if (it == s.values.end() || !std::isfinite(it->second) || it->second < 0) {
+            missing += std::string(missing.empty() ? "" : ", ") + name;
+            return 0;
+        }
+        return static_cast<uint64_t>(it->second);
+    };
+    GpuCost c;
+    c.family = family();
+    c.mesa = mesa();
+    c.wave = written->subgroup_size;
+    c.instructions = stat(*written, kInstructions);
+    c.vgprs = stat(*written, kVgprs);
+    c.spilled_vgprs = stat(*written, kSpilledVgprs);
+    c.scratch_bytes = stat(*written, kScratch);
+    c.latency = stat(*written, kLatency);
+    c.inverse_throughput = stat(*written, kInverseThroughput);
+    c.waves_per_simd = stat(*written, kWavesPerSimd);
+    c.inverse_throughput_unrolled = stat(*unrolled, kInverseThroughput);
+    c.cost = std::max(c.inverse_throughput, c.inverse_throughput_unrolled);
+    if (!missing.empty()) {
+        if (diag)
+            diag({Severity::Error, "", 0,
+                  "gpu cost (RADV " + family() + "): the driver reported no " + missing});
+        return std::nullopt;
+    }
+    return c;
+}
+
+std::optional<GpuCost> GpuCostMeter::measure(const Variant& v, const DiagnosticConsumer& diag) {
+    const auto* words = impl_->kernel(v, diag);
+    if (!words) return std::nullopt;
+    auto cost = measure(*words, diag);
+    if (!cost) return std::nullopt;
+    const Variant base = baseline_of(v);
+    if (!is_valid(base)) return cost;
+    const auto* base_words = impl_->kernel(base, diag);
+    if (!base_words) return std::nullopt;
+    const auto base_cost = measure(*base_words, diag);
+    if (!base_cost) return std::nullopt;
+    if (base_cost->cost > 0)
+        cost->ratio_to_point =
+            static_cast<double>(cost->cost) / static_cast<double>(base_cost->cost);
+    return cost;
+}
+
+std::optional<GpuCost> gpu_cost(const std::vector<uint32_t>& spirv, const GpuCostOptions& opt,
+                                const DiagnosticConsumer& diag) {
+    auto meter = GpuCostMeter::create(opt, diag);
+    if (!meter) return std::nullopt;
+    return meter->measure(spirv, diag);
+}
+
+std::optional<GpuCost> gpu_cost(const Variant& v, const GpuCostOptions& opt,
+                                const DiagnosticConsumer& diag) {
+    auto meter = GpuCostMeter::create(opt, diag);
+    if (!meter) return std::nullopt;
+    return meter->measure(v, diag);
+}
+
+}  // namespace arealight
