@@ -106,6 +106,10 @@ std::string expand_literals(const std::string& text, const std::string& suffix) 
 void emit_language_macros(std::string& out, const Variant& v, Language lang) {
     out += lang == Language::Glsl ? "#define AL_LANG_GLSL 1\n" : "#define AL_LANG_CPP 1\n";
     out += lang == Language::Glsl ? "#define AL_INOUT(T) inout T\n" : "#define AL_INOUT(T) T&\n";
+    // A loop of constant trip count the GPU should run unrolled: SPIR-V's Unroll loop
+    // control, which Mesa's NIR (RADV, lavapipe) and other drivers honour; the C++
+    // mirror's compiler decides for itself.
+    out += lang == Language::Glsl ? "#define AL_UNROLL [[unroll]]\n" : "#define AL_UNROLL\n";
     // The half-precision part of a variant computes in hreal and hvec2..4: fp16 where
     // the precision is fp16 (the mirror's al_half rounds every operation to fp16,
     // include/arealight/mirror_support.hpp), else the working precision.
@@ -370,6 +374,7 @@ void emit_library(std::string& out, const std::vector<Variant>& variants, Langua
         names);
     if (lang == Language::Glsl) {
         out += "#extension GL_GOOGLE_cpp_style_line_directive : enable\n";
+        out += "#extension GL_EXT_control_flow_attributes : enable\n";
         for (const auto& v : variants) {
             if (effective_precision(v) == Precision::Fp16) {
                 out += "#extension GL_EXT_shader_explicit_arithmetic_types_float16 : require\n";

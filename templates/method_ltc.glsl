@@ -296,7 +296,7 @@ vec4 al_shade(AlCase c) {
     // Vertices as given (Lambert, about n) and through Minv (LTC), walked as
     // polygon.glsl walks them (backwards from the front) so that both sums are >= 0;
     // the last step closes the polygon at vertex 0.
-    for (int k = 0; k <= AL_MAX_VERTS; ++k) {
+    AL_UNROLL for (int k = 0; k <= AL_MAX_VERTS; ++k) {
         if (k > count) break;
         int idx = k == 0 || k == count ? 0 : (side > AL_R(0.0) ? count - k : k);
         db = rvec3(c.verts[idx]);
