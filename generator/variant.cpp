@@ -21,7 +21,7 @@ namespace {
 const Distribution kDists[] = {Distribution::Phong, Distribution::Blinn, Distribution::Beckmann,
                                Distribution::Ggx};
 const Method kMethods[] = {Method::Exact,     Method::Arvo, Method::Lorentz, Method::Pearson,
-                           Method::Ellipsoid, Method::Ltc,  Method::Point};
+                           Method::Ellipsoid, Method::Ltc,  Method::Mrp,    Method::Point};
 const LightType kLights[] = {LightType::Polygon, LightType::Disk, LightType::Sphere,
                              LightType::Ellipsoid};
 const Sided kSided[] = {Sided::Any, Sided::One, Sided::Two};
@@ -163,7 +163,8 @@ std::vector<KeyRow> key_rows() {
         required_key("method",    &Variant::method,      kMethods,       one_hot("AL_METHOD_"),
                      "how the integral is computed: exact quadrature reference, arvo's "
                      "recurrence, lorentz/pearson/ellipsoid peak functions, ltc (linearly "
-                     "transformed cosines, fitted tables), point baseline"),
+                     "transformed cosines, fitted tables), mrp (representative point), point "
+                     "baseline"),
         required_key("light",     &Variant::light,       kLights,        one_hot("AL_LIGHT_"),
                      "light shape"),
         key("sided",              &Variant::sided,       kSided,
@@ -387,6 +388,39 @@ std::vector<VariantFamily> curved_rows(const std::vector<VariantFamily>& polygon
     return out;
 }
 
+// Representative-point shading (templates/method_mrp.glsl): every distribution and light,
+// at one shape (sided=any, verts=8 for polygons; no key for curved lights), without the
+// second quantity (ndf, moment), as the point baselines and ltc. Polygons stream the
+// clipped boundary into the vector form factor (vector_form_factor.glsl, polygon.glsl);
+// curved lights take their ellipse record's cone (ellipse_cone.glsl).
+std::vector<VariantFamily> mrp_rows() {
+    using D = Distribution;
+    using L = LightType;
+    std::vector<VariantFamily> out;
+    for (L light : {L::Polygon, L::Disk, L::Sphere, L::Ellipsoid}) {
+        for (D dist : kDists) {
+            VariantFamily f{dist, Method::Mrp, light, {}, {}, {}, false};
+            if (dist == D::Phong) {
+                f.templates = {"dist_phong.glsl"};
+            } else {
+                f.templates = {std::string("dist_") + to_string(dist) + ".glsl", "microfacet.glsl",
+                               "microfacet_brdf.glsl"};
+            }
+            f.templates.push_back("point_light.glsl");
+            if (light == L::Polygon) {
+                f.keys = {FamilyKey("sided", {"any"}), FamilyKey("verts", {"8"})};
+                f.templates.push_back("vector_form_factor.glsl");
+                f.templates.push_back("polygon.glsl");
+            } else {
+                f.templates.push_back("ellipse_cone.glsl");
+            }
+            f.templates.push_back("method_mrp.glsl");
+            out.push_back(std::move(f));
+        }
+    }
+    return out;
+}
+
 // Where a key applies, as the error messages name it: the row's declared `where`,
 // else the smallest set of (dist, method, light) values, over as few of those keys
 // as possible, whose families are exactly the ones that name the key (none: every
@@ -513,6 +547,7 @@ const Tables& tables() {
         t.keys = key_rows();
         t.families = family_rows();
         for (auto& f : curved_rows(t.families, t.keys)) t.families.push_back(std::move(f));
+        for (auto& f : mrp_rows()) t.families.push_back(std::move(f));
         for (auto& f : t.families) {
             for (auto& fk : f.keys) {
                 for (const auto& row : t.keys)
@@ -660,6 +695,8 @@ const char* to_string(Method m) {
             return "ellipsoid";
         case Method::Ltc:
             return "ltc";
+        case Method::Mrp:
+            return "mrp";
         case Method::Point:
             return "point";
     }

@@ -149,8 +149,9 @@ real al_polygon_stream(AlCase c, real side, rvec3 n, rvec3 axis, bool clip_axis,
     return lit_sum / AL_TWO_PI;
 }
 
-#ifdef AL_DIST_PHONG
-// The Phong moments about `axis` over D (al_moments_end), and D's diffuse.
+#if defined(AL_DIST_PHONG) && !defined(AL_METHOD_MRP)
+// The Phong moments about `axis` over D (al_moments_end), and D's diffuse (every Phong
+// accumulator but mrp's vector form factor, which has no lobe).
 rvec2 al_polygon_moments(AlCase c, real side, rvec3 n, rvec3 axis, real N,
                          AL_INOUT(real) diffuse) {
     AlMoments M = al_moments_begin(axis);

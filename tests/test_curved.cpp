@@ -109,28 +109,6 @@ CaseSet of_type(const CaseSet& all, LightType t) {
     return out;
 }
 
-std::map<std::string, CaseResult> oracle(const CaseSet& set) {
-    std::map<std::string, CaseResult> ref;
-    for (const auto& c : set.cases) ref[c.id] = reference_case(c);
-    return ref;
-}
-
-// Largest relative difference (floor 1e-3) of diffuse and specular between two runs
-// of the same cases.
-double worst_difference(const ResultSet& a, const ResultSet& b, std::string& where) {
-    double worst = 0;
-    for (std::size_t i = 0; i < a.results.size() && i < b.results.size(); ++i) {
-        for (auto q : {&CaseResult::diffuse, &CaseResult::specular}) {
-            const double e = rel_err(*(a.results[i].*q), *(b.results[i].*q));
-            if (e > worst) {
-                worst = e;
-                where = a.results[i].id;
-            }
-        }
-    }
-    return worst;
-}
-
 const char* kSameLightVariants[] = {"dist=phong,method=point,light=", "dist=ggx,method=point,light=",
                                     "dist=phong,method=pearson,light=",
                                     "dist=ggx,method=pearson,light=",

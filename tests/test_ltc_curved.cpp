@@ -17,6 +17,7 @@
 #include "arealight/evaluator.hpp"
 #include "arealight/reference.hpp"
 #include "eval_support.hpp"
+#include "extreme_lights.hpp"
 #include "microfacet_cases.hpp"
 #include "test_support.hpp"
 
@@ -30,12 +31,6 @@ const LightType kCurved[] = {LightType::Disk, LightType::Sphere, LightType::Elli
 std::string curved_name(Distribution d, LightType l, const std::string& keys = "") {
     std::string s = std::string("dist=") + to_string(d) + ",method=ltc,light=" + to_string(l);
     return keys.empty() ? s : s + "," + keys;
-}
-
-void set_param(Case& c, Distribution d, double param) {
-    c.material.distribution = d;
-    (d == Distribution::Phong || d == Distribution::Blinn ? c.material.exponent
-                                                          : c.material.alpha) = param;
 }
 
 // Two unit vectors completing w to an orthonormal frame.
@@ -138,21 +133,11 @@ CaseSet fan_of(const Case& c, int k) {
     return set;
 }
 
-std::map<std::string, CaseResult> oracle(const CaseSet& set) {
-    std::map<std::string, CaseResult> ref;
-    for (const auto& c : set.cases) ref[c.id] = reference_case(c, {});
-    return ref;
-}
-
-// diffuse is CONTRACT.md 2's Lambert term in closed form (ellipse_cone.glsl), in fp32:
-// relL2 over a set and the largest case error (score metric, floor 1e-3). Measured: on
-// the random sets below relL2 3.9e-7 and largest case 9.5e-6; on the public sets relL2
-// 4.5e-6 at most per (set, dist, light).
-constexpr double kDiffuseRelL2 = 1e-5;
-constexpr double kDiffuseCase = 1e-4;
-// The mirror against lavapipe: the same fp32 math in another order (measured 2.5e-5 on
-// the random sets below and 4.4e-5 on the public sets, floor 1e-2).
-constexpr double kBackendTol = 1e-3;
+// diffuse is CONTRACT.md 2's Lambert term in closed form (ellipse_cone.glsl), held to
+// kClosedFormDiffuse (eval_support.hpp). Measured: on the random sets below relL2 3.9e-7
+// and largest case 9.5e-6; on the public sets relL2 4.5e-6 at most per (set, dist,
+// light). The mirror against lavapipe: measured 2.5e-5 on the random sets below and
+// 4.4e-5 on the public sets (floor 1e-2).
 
 }  // namespace
 
@@ -185,40 +170,8 @@ TEST_CASE("ltc curved: exact diffuse, bounded specular, both backends agree",
                                     : l == LightType::Sphere ? bar.sphere
                                                              : bar.ellipsoid;
             for (const char* keys : {"", "horizon=proxy"}) {
-                const std::string name = curved_name(bar.d, l, keys);
-                std::map<Backend, ResultSet> out;
-                for (Backend b : {Backend::Cpu, Backend::Vulkan}) {
-                    out[b] = run(b, name, cases);
-                    REQUIRE(out[b].results.size() == cases.cases.size());
-                    const double spec = rel_l2(out[b], ref, &CaseResult::specular);
-                    const double diff = rel_l2(out[b], ref, &CaseResult::diffuse);
-                    double worst = 0;
-                    std::string worst_at;
-                    for (const auto& r : out[b].results) {
-                        INFO(r.id);
-                        CHECK(*r.specular >= 0.0);
-                        const double e = rel_err(*r.diffuse, *ref.at(r.id).diffuse);
-                        if (e > worst) worst = e, worst_at = r.id;
-                    }
-                    INFO(name << " on " << to_string(b) << ": specular relL2 " << spec
-                              << ", diffuse relL2 " << diff << ", worst diffuse case " << worst
-                              << " at " << worst_at);
-                    CHECK(spec <= spec_bar);
-                    CHECK(diff <= kDiffuseRelL2);
-                    CHECK(worst <= kDiffuseCase);
-                }
-                double worst = 0;
-                std::string worst_at;
-                for (std::size_t i = 0; i < cases.cases.size(); ++i) {
-                    const auto &c = out[Backend::Cpu].results[i],
-                               &g = out[Backend::Vulkan].results[i];
-                    const double e = std::max(rel_err(*g.specular, *c.specular, 1e-2),
-                                              rel_err(*g.diffuse, *c.diffuse, 1e-2));
-                    if (e > worst) worst = e, worst_at = c.id;
-                }
-                INFO(name << ": worst CPU/GPU relative difference " << worst << " at "
-                          << worst_at);
-                CHECK(worst <= kBackendTol);
+                check_both_backends(curved_name(bar.d, l, keys), cases, ref,
+                                    kClosedFormDiffuse.with_specular(spec_bar));
             }
         }
     }
@@ -379,93 +332,24 @@ TEST_CASE("ltc curved: invariant under rigid motions", "[shading][ltc]") {
     // (measured: 1.5e-5 at most, floor 1e-3).
     constexpr double kMotionTol = 1e-3;
     std::mt19937_64 rng(6400);
-    std::uniform_real_distribution<double> U(-5, 5);
     for (Distribution d : kAllDists) {
         for (LightType l : kCurved) {
             const CaseSet cases =
                 random_curved(6400 + 10 * static_cast<int>(d) + static_cast<int>(l), 10, d, l,
                               true);
-            CaseSet moved = cases;
-            for (auto& c : moved.cases)
-                c = transformed(c, random_rotation(rng), glm::dvec3(U(rng), U(rng), U(rng)));
-            const ResultSet a = run(Backend::Cpu, curved_name(d, l), cases);
-            const ResultSet b = run(Backend::Cpu, curved_name(d, l), moved);
-            REQUIRE(a.results.size() == b.results.size());
-            for (std::size_t i = 0; i < a.results.size(); ++i) {
-                INFO(curved_name(d, l) << " " << a.results[i].id << ": diffuse "
-                                       << *a.results[i].diffuse << " / " << *b.results[i].diffuse
-                                       << ", specular " << *a.results[i].specular << " / "
-                                       << *b.results[i].specular);
-                CHECK(rel_err(*b.results[i].diffuse, *a.results[i].diffuse) <= kMotionTol);
-                CHECK(rel_err(*b.results[i].specular, *a.results[i].specular) <= kMotionTol);
-            }
+            check_rigid_motion(curved_name(d, l), cases, rng, kMotionTol);
         }
     }
 }
 
 TEST_CASE("ltc curved: every variant finite and non-negative at the extremes, 0 where dark",
           "[shading][vulkan][ltc]") {
-    // Lights tiny (1e-6 of their distance) and huge (1e3), along r and straddling the
-    // horizon; p 1e-7 from a disk's plane (its foot inside and outside the disk), 1e-6
-    // outside a sphere's surface; alpha 1e-3 and 1 (N 1e5 and 1), views from normal to
-    // grazing (n.v 1e-6) and from below. p on a disk's plane, behind a one-sided disk or
-    // inside a sphere or an ellipsoid: exactly 0.
+    // The lights of extreme_lights.hpp (each variant takes the curved ones of its type):
+    // tiny to huge, straddling the horizon, p 1e-7 from a disk's plane, 1e-6 outside a
+    // sphere, N and alpha at their ends, views from normal to below; exactly 0 where p
+    // is on a disk's plane, behind a one-sided disk, or inside a sphere or an ellipsoid.
     CaseSet set, dark;
-    const glm::dvec3 n(0, 0, 1);
-    for (Distribution d : kAllDists) {
-        const bool exponent = d == Distribution::Phong || d == Distribution::Blinn;
-        for (double param : exponent ? std::vector<double>{1.0, 1e5} : std::vector<double>{1e-3, 1.0}) {
-            for (double nv : {1.0, 0.3, 1e-6, -0.2}) {
-                const double sv = std::sqrt(std::max(0.0, 1 - nv * nv));
-                const glm::dvec3 v(sv, 0, nv);
-                const glm::dvec3 r = glm::normalize(2 * nv * n - v + glm::dvec3(0, 0, 1e-9));
-                for (const glm::dvec3& dir :
-                     {glm::normalize(r + glm::dvec3(0, 0, 0.3)),
-                      glm::normalize(glm::dvec3(r.x, r.y, 0.0) + glm::dvec3(0, 0, 1e-3))}) {
-                    glm::dvec3 t1, t2;
-                    frame_of(dir, t1, t2);
-                    // A light of this surface and material about `center`, into `to`.
-                    auto add = [&](CaseSet& to, LightType type, const glm::dvec3& center) -> Case& {
-                        Case c;
-                        c.id = "x" + std::to_string(set.cases.size() + dark.cases.size());
-                        c.n = a3(n);
-                        c.v = a3(v);
-                        set_param(c, d, param);
-                        c.light.type = type;
-                        c.light.center = a3(center);
-                        to.cases.push_back(c);
-                        return to.cases.back();
-                    };
-                    // Discs facing p (u x v = -dir), spheres and ellipsoids, at distance 2.
-                    for (double size : {1e-6, 0.5, 1e3}) {
-                        Case& disk = add(set, LightType::Disk, 2.0 * dir);
-                        disk.light.u = a3(2.0 * size * t1);
-                        disk.light.v = a3(-2.0 * size * t2);
-                        if (size > 1.0) continue;
-                        add(set, LightType::Sphere, 2.0 * dir).light.radius = 2.0 * size;
-                        add(set, LightType::Ellipsoid, 2.0 * dir).light.axes = {
-                            a3(2.0 * size * t1), a3(0.5 * size * t2), a3(1.5 * size * dir)};
-                    }
-                    // A disc of radius 2 whose plane passes 1e-7 from p, on p, and behind p
-                    // facing away; its foot inside (0) and outside (3) it.
-                    for (double off : {0.0, 3.0}) {
-                        for (double h : {1e-7, 0.0, -1.0}) {
-                            Case& disk = add(h > 0.0 ? set : dark, LightType::Disk,
-                                             h * dir + off * t1);
-                            disk.light.u = a3(2.0 * t1);
-                            disk.light.v = a3(-2.0 * t2);
-                        }
-                    }
-                    // p 1e-6 outside a sphere, and inside a sphere and an ellipsoid.
-                    add(set, LightType::Sphere, dir).light.radius = 1.0 - 1e-6;
-                    add(dark, LightType::Sphere, dir).light.radius = 1.5;
-                    add(dark, LightType::Ellipsoid, dir).light.axes = {
-                        a3(glm::dvec3(1.5, 0, 0)), a3(glm::dvec3(0, 1.2, 0)),
-                        a3(glm::dvec3(0, 0, 2.0))};
-                }
-            }
-        }
-    }
+    extreme_lights(set, dark);
     std::size_t variants = 0;
     for (const auto& v : enumerate_variants()) {
         if (v.method != Method::Ltc || v.light == LightType::Polygon) continue;

@@ -223,7 +223,7 @@ TEST_CASE("scene library: GGX polygon lights only yield one GGX function and not
 // shared cosine-lobe edge code is named for the lobe, the Beckmann Lambda is stitched
 // only for beckmann and blinn).
 TEST_CASE("scene library: a GGX library of any method has no other distribution's code") {
-    for (const char* method : {"exact", "point", "lorentz", "pearson", "ellipsoid", "ltc"}) {
+    for (const char* method : {"exact", "point", "lorentz", "pearson", "ellipsoid", "ltc", "mrp"}) {
         const SceneLibrary lib = scene_library(
             with_quality(std::string(R"({"method": ")") + method + "\"}"), "ggx.scene.json");
         REQUIRE(lib.variants.size() == 1);

@@ -46,6 +46,13 @@ inline Case polygon_case(const std::string& id, std::vector<glm::dvec3> verts, g
     return c;
 }
 
+// The material's distribution and its parameter (exponent or alpha).
+inline void set_param(Case& c, Distribution d, double param) {
+    c.material.distribution = d;
+    (d == Distribution::Phong || d == Distribution::Blinn ? c.material.exponent
+                                                          : c.material.alpha) = param;
+}
+
 // Uniformly distributed rotation (normalized Gaussian quaternion).
 inline glm::dmat3 random_rotation(std::mt19937_64& rng) {
     std::normal_distribution<double> N(0.0, 1.0);

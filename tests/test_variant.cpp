@@ -85,6 +85,7 @@ TEST_CASE("parsing fills the named fields and defaults the rest", "[variant]") {
 
     CHECK(std::string(to_string(Method::Exact)) == "exact");
     CHECK(std::string(to_string(Method::Point)) == "point");
+    CHECK(std::string(to_string(Method::Mrp)) == "mrp");
     CHECK(std::string(to_string(Sided::Any)) == "any");
     CHECK(std::string(to_string(Sided::One)) == "one");
     CHECK(std::string(to_string(Sided::Two)) == "two");
@@ -117,10 +118,12 @@ TEST_CASE("enumeration: every variant valid, unique, and round-trips", "[variant
     // default proxy; the point baseline of each distribution; ltc of each distribution,
     // horizon clip or proxy; exact of each distribution at its default keys, fp64 or fp32.
     const std::size_t curved = 3 * (3 * 2 * 2 + 3 * 3 + 4 + 4 * 2 + 4 * 2);
+    // mrp: every distribution and light, one shape each.
+    const std::size_t mrp = 4 * 4;
     INFO("enumerated " << all.size());
     CHECK(all.size() == phong_exact_polygon + phong_arvo_polygon + phong_peak_polygon +
                             phong_point_polygon + microfacet_polygon + microfacet_peak_polygon +
-                            ltc_polygon + curved);
+                            ltc_polygon + curved + mrp);
 
     std::set<std::string> names;
     for (const auto& v : all) {
@@ -140,7 +143,7 @@ TEST_CASE("enumeration: every variant valid, unique, and round-trips", "[variant
     CHECK(canonical_name(all[1]) ==
           "dist=phong,method=exact,light=polygon,verts=3,nodes=8,precision=fp32");
     CHECK(canonical_name(all[2]) == "dist=phong,method=exact,light=polygon,verts=3,nodes=12");
-    CHECK(canonical_name(all.back()) == "dist=ggx,method=ltc,light=ellipsoid,horizon=proxy");
+    CHECK(canonical_name(all.back()) == "dist=ggx,method=mrp,light=ellipsoid");
     CHECK(enumerate_variants() == all);
 }
 
@@ -261,7 +264,7 @@ TEST_CASE("bad variant names are rejected naming the key", "[variant]") {
     CHECK_THAT(
         error_of("dist=phong,method=ltcx,light=polygon"),
         Contains("key 'method': unknown value 'ltcx' (expected exact, arvo, lorentz, pearson, "
-                 "ellipsoid, ltc, point)"));
+                 "ellipsoid, ltc, mrp, point)"));
     CHECK_THAT(error_of("dist=phong,method=exact,light=quad"),
                Contains("key 'light': unknown value 'quad' (expected polygon, disk, sphere, "
                         "ellipsoid)"));

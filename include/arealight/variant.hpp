@@ -16,9 +16,10 @@ namespace arealight {
 // exact: in-shader accuracy reference (quadrature); arvo: Arvo's O(N) recurrence
 // for integer exponents (the paper's reference cost); lorentz, pearson, ellipsoid:
 // seed 000's O(1) peak functions; ltc: linearly transformed cosines (Heitz et al.
-// 2016, seed 001) with arealight's own fitted tables; point: the point-light
-// baseline of every speed ratio.
-enum class Method { Exact, Arvo, Lorentz, Pearson, Ellipsoid, Ltc, Point };
+// 2016, seed 001) with arealight's own fitted tables; mrp: representative-point
+// shading as engines ship it (Karis 2013, Drobot 2014) with exact closed-form diffuse;
+// point: the point-light baseline of every speed ratio.
+enum class Method { Exact, Arvo, Lorentz, Pearson, Ellipsoid, Ltc, Mrp, Point };
 // Peak-function fitting recipe: tuned (default: fit points, shape parameters and
 // near/far forms of our own, templates/method_peak_phong.glsl) or paper (seed 000
 // eq. 7, 13-14, 17-18 as printed, parity labels corrected).

@@ -481,8 +481,9 @@ al_polygon_phong_real al_polygon_phong_polygon_stream(AlPolygonPhongCase c, al_p
     return lit_sum / AL_POLYGON_PHONG_TWO_PI;
 }
 
-#ifdef AL_POLYGON_PHONG_DIST_PHONG
-// The Phong moments about `axis` over D (al_moments_end), and D's diffuse.
+#if defined(AL_POLYGON_PHONG_DIST_PHONG) && !defined(AL_POLYGON_PHONG_METHOD_MRP)
+// The Phong moments about `axis` over D (al_moments_end), and D's diffuse (every Phong
+// accumulator but mrp's vector form factor, which has no lobe).
 al_polygon_phong_rvec2 al_polygon_phong_polygon_moments(AlPolygonPhongCase c, al_polygon_phong_real side, al_polygon_phong_rvec3 n, al_polygon_phong_rvec3 axis, al_polygon_phong_real N,
                          AL_POLYGON_PHONG_INOUT(al_polygon_phong_real) diffuse) {
     AlPolygonPhongMoments M = al_polygon_phong_moments_begin(axis);
@@ -492,7 +493,7 @@ al_polygon_phong_rvec2 al_polygon_phong_polygon_moments(AlPolygonPhongCase c, al
 #endif
 #endif
 #endif
-#line 496 "arealight-generated"
+#line 497 "arealight-generated"
 #line 1 "templates/light_polygon.glsl"
 // Shading of polygon lights (CONTRACT.md 2) by each method: the point-light
 // baseline, or clipping (polygon.glsl) and the method's boundary moments.
@@ -610,7 +611,7 @@ vec4 al_polygon_phong_shade(AlPolygonPhongCase c) {
     return vec4(diffuse, specular, sm.y, 0.0f);
 }
 #endif
-#line 614 "arealight-generated"
+#line 615 "arealight-generated"
 #line 1 "templates/library_polygon.glsl"
 // The library entry for polygon lights (CONTRACT.md 5): the renderer's fp32 values,
 // in any consistent space, turned into the record the methods work on, in the
@@ -662,7 +663,7 @@ AlPolygonPhongCase al_polygon_phong_polygon_record(ArealightSurface s, vec3 vert
 vec4 al_polygon_phong_polygon_evaluate(ArealightSurface s, vec3 vertices[8], int count, bool two_sided) {
     return al_polygon_phong_clean(al_polygon_phong_shade(al_polygon_phong_polygon_record(s, vertices, count, two_sided)));
 }
-#line 666 "arealight-generated"
+#line 667 "arealight-generated"
 // arealight_polygon_phong: variant dist=phong,method=point,light=polygon,verts=3.
 // Domain: p, n, v, the light in one space, fp32 (n, v any length); convex planar polygon, counter-clockwise seen from its emitting side, count in [3, AL_MAX_VERTS] (more are cut to the first AL_MAX_VERTS); s.param the exponent N in [1, 1e5]; s.f0 in [0, 1] (ignored).
 // Returns diffuse and specular of CONTRACT.md 2 for unit radiance: finite, >= 0.
@@ -726,4 +727,4 @@ void main() {
 #endif
     al_results[i] = result;
 }
-#line 730 "arealight-generated"
+#line 731 "arealight-generated"
