@@ -15,6 +15,7 @@ for d in blinn beckmann ggx; do
   $al report "${sets[@]}" --variants dist=$d,light=polygon --out docs/report-$d
 done
 $al report "${sets[@]}" --variants method=ltc,light=polygon --out docs/report-ltc
+$al report "${sets[@]}" --variants method=mrp --out docs/report-mrp
 for l in disk sphere ellipsoid; do
   $al report "${sets[@]}" --variants light=$l --out docs/report-$l
 done
@@ -29,6 +30,7 @@ $al sweep --cases $V/typical.cases.json --variants dist=phong,light=disk,proxy=1
 $al sweep --cases $V/typical.cases.json --variants dist=ggx,light=disk --out docs/sweep-ggx-disk
 $al quality --report docs/report-phong/report.json --report docs/report-blinn/report.json \
   --report docs/report-beckmann/report.json --report docs/report-ggx/report.json \
-  --report docs/report-ltc/report.json --report docs/report-disk/report.json \
+  --report docs/report-ltc/report.json --report docs/report-mrp/report.json \
+  --report docs/report-disk/report.json \
   --report docs/report-sphere/report.json --report docs/report-ellipsoid/report.json \
   --out data/quality/measured.json
