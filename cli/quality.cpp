@@ -3,10 +3,11 @@
 #include <chrono>
 
 #include "arealight/atomic_file.hpp"
-#include "gpu_family.hpp"
 #include "arealight/quality.hpp"
 #include "arealight/variant.hpp"
+#include "gpu_family.hpp"
 #include "print_diagnostic.hpp"
+#include "progress.hpp"
 
 namespace arealight::cli {
 
@@ -48,19 +49,20 @@ int run_quality(const QualityArgs& args) {
     gopt.family = args.gpu_family;
     std::size_t measured = 0;
     if (auto meter = GpuCostMeter::create(gopt, print_diagnostic)) {
+        ProgressPrinter progress("gpu cost", "variants");
         for (auto& m : data->variants) {
             const auto v = parse_variant(m.variant, {});
             m.gpu = meter->measure(*v, print_diagnostic);
             if (!m.gpu) return 3;
-            ++measured;
+            progress(++measured, data->variants.size());
         }
     }
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (!write_file_atomic(args.out, format_quality(*data), print_diagnostic)) return 3;
-    std::fprintf(stderr, "quality: %zu variants from %zu reports (GPU cost of %zu in %.0f s); wrote %s\n",
-                 data->variants.size(), data->reports.size(), measured, seconds,
-                 args.out.c_str());
+    std::fprintf(stderr,
+                 "quality: %zu variants from %zu reports (GPU cost of %zu in %.0f s); wrote %s\n",
+                 data->variants.size(), data->reports.size(), measured, seconds, args.out.c_str());
     return 0;
 }
 

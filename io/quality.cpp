@@ -142,8 +142,8 @@ std::optional<QualityData> quality_from_reports(const std::vector<std::string>& 
         data.reports.push_back(path);
         for (std::size_t i = 0; i < rows->size(); ++i) {
             std::string why, warning;
-            auto m = (*rows)[i].is_object() ? from_row((*rows)[i], path, why, warning)
-                                            : std::nullopt;
+            auto m =
+                (*rows)[i].is_object() ? from_row((*rows)[i], path, why, warning) : std::nullopt;
             if (!warning.empty()) warn(diag, path, fmt::format("rows[{}]: {}", i, warning));
             if (m)
                 put(data, std::move(*m));

@@ -100,9 +100,10 @@ std::optional<std::vector<BenchRow>> benchmark(Evaluator& ev, const CaseSet& cas
 std::string format_bench(const std::vector<BenchRow>& rows) {
     std::size_t w = 7;
     for (const auto& r : rows) w = std::max(w, r.variant.size());
-    std::string t = fmt::format("{:<{}} {:>9} {:>8} {:>12} {:>9} {:>8} {:>8} {:>9} {:>8} {:>6} {:>6}\n",
-                                "variant", w, "exponent", "cases", "ns/case", "x base", "SPIR-V",
-                                "x86-64", "GPU cost", "x point", "VGPRs", "waves");
+    std::string t =
+        fmt::format("{:<{}} {:>9} {:>8} {:>12} {:>9} {:>8} {:>8} {:>9} {:>8} {:>6} {:>6}\n",
+                    "variant", w, "exponent", "cases", "ns/case", "x base", "SPIR-V", "x86-64",
+                    "GPU cost", "x point", "VGPRs", "waves");
     for (const auto& r : rows) {
         auto gpu = [&](auto field) { return r.gpu ? fmt::format("{}", field(*r.gpu)) : "-"; };
         t += fmt::format(
@@ -117,9 +118,10 @@ std::string format_bench(const std::vector<BenchRow>& rows) {
     // Which compiler measured the GPU columns.
     for (const auto& r : rows)
         if (r.gpu) {
-            t += fmt::format("GPU cost: ACO inverse throughput (cycles per wave, loops unrolled "
-                             "where constant) on RADV {}, Mesa {}, wave{}\n",
-                             r.gpu->family, r.gpu->mesa, r.gpu->wave);
+            t += fmt::format(
+                "GPU cost: ACO inverse throughput (cycles per wave, loops unrolled "
+                "where constant) on RADV {}, Mesa {}, wave{}\n",
+                r.gpu->family, r.gpu->mesa, r.gpu->wave);
             break;
         }
     return t;

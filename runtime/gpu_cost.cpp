@@ -52,22 +52,27 @@ bool is_radv_family(const std::string& name) {
 }
 
 struct GpuCostMeter::Impl {
+    GpuCostOptions opt;
     std::unique_ptr<RadvDevice> device;
     std::string mesa;
     // RADV statistics by module: the unrolled module of a loop-free kernel is often
-    // the module itself, and a baseline serves many variants.
-    std::map<std::vector<uint32_t>, RadvStatistics> compiled;
+    // the module itself, and a baseline serves many variants. Modules whose compile
+    // was stopped are remembered too (nullopt), not tried again.
+    std::map<std::vector<uint32_t>, std::optional<RadvStatistics>> compiled;
     std::map<std::string, std::vector<uint32_t>> kernels;  // by canonical variant name
 
     const RadvStatistics* compile(const std::vector<uint32_t>& spirv,
-                                  const DiagnosticConsumer& diag) {
+                                  const DiagnosticConsumer& diag, bool& stopped) {
+        stopped = false;
         auto it = compiled.find(spirv);
         if (it == compiled.end()) {
-            auto stats = device->compile(spirv, diag);
-            if (!stats) return nullptr;
-            it = compiled.emplace(spirv, std::move(*stats)).first;
+            auto stats = device->compile(spirv, diag, opt.compile_seconds, opt.compile_memory_bytes,
+                                         &stopped);
+            if (!stats && !stopped) return nullptr;
+            it = compiled.emplace(spirv, std::move(stats)).first;
         }
-        return &it->second;
+        stopped = !it->second;
+        return it->second ? &*it->second : nullptr;
     }
 
     const std::vector<uint32_t>* kernel(const Variant& v, const DiagnosticConsumer& diag) {
@@ -90,6 +95,7 @@ std::unique_ptr<GpuCostMeter> GpuCostMeter::create(const GpuCostOptions& opt,
     auto device = RadvDevice::create(opt.family, opt.icd, diag);
     if (!device) return nullptr;
     auto impl = std::make_unique<Impl>();
+    impl->opt = opt;
     impl->mesa = mesa_version(device->driver_info());
     impl->device = std::move(device);
     return std::unique_ptr<GpuCostMeter>(new GpuCostMeter(std::move(impl)));
@@ -104,12 +110,25 @@ const std::string& GpuCostMeter::mesa() const {
 
 std::optional<GpuCost> GpuCostMeter::measure(const std::vector<uint32_t>& spirv,
                                              const DiagnosticConsumer& diag) {
-    const RadvStatistics* written = impl_->compile(spirv, diag);
+    bool stopped = false;
+    const RadvStatistics* written = impl_->compile(spirv, diag, stopped);
     if (!written) return std::nullopt;
     const auto unrolled_words = unroll_constant_loops(spirv, diag);
     if (!unrolled_words) return std::nullopt;
-    const RadvStatistics* unrolled = impl_->compile(*unrolled_words, diag);
-    if (!unrolled) return std::nullopt;
+    // Stopped (past the time or memory limit): a diagnostic came as an error; what it
+    // means here is a figure left out.
+    auto warning = [&](const Diagnostic& d) {
+        if (!diag) return;
+        Diagnostic w = d;
+        w.severity = Severity::Warning;
+        diag(w);
+    };
+    const RadvStatistics* unrolled = impl_->compile(*unrolled_words, warning, stopped);
+    if (!unrolled && !stopped) return std::nullopt;
+    if (stopped && diag)
+        diag({Severity::Warning, "", 0,
+              "gpu cost: the unrolled module was not compiled; its cost is the figure as "
+              "written (inverse_throughput_unrolled 0)"});
 
     std::string missing;
     auto stat = [&](const RadvStatistics& s, const char* name) -> uint64_t {
@@ -131,7 +150,7 @@ std::optional<GpuCost> GpuCostMeter::measure(const std::vector<uint32_t>& spirv,
     c.latency = stat(*written, kLatency);
     c.inverse_throughput = stat(*written, kInverseThroughput);
     c.waves_per_simd = stat(*written, kWavesPerSimd);
-    c.inverse_throughput_unrolled = stat(*unrolled, kInverseThroughput);
+    c.inverse_throughput_unrolled = unrolled ? stat(*unrolled, kInverseThroughput) : 0;
     c.cost = std::max(c.inverse_throughput, c.inverse_throughput_unrolled);
     if (!missing.empty()) {
         if (diag)

@@ -4,15 +4,24 @@
 #include "radv_device.hpp"
 
 #include <dlfcn.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <vulkan/vulkan.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <utility>
 
 #include "arealight/gpu_cost.hpp"
@@ -95,6 +104,13 @@ std::vector<T> enumerate_all(Call call) {
     if (n) call(&n, out.data());
     out.resize(n);
     return out;
+}
+
+std::string timeout_text(double seconds) {
+    char text[96];
+    std::snprintf(text, sizeof text, "ACO did not finish within %g s; the compile was stopped",
+                  seconds);
+    return text;
 }
 
 std::string result_text(VkResult r) {
@@ -309,8 +325,132 @@ std::unique_ptr<RadvDevice> RadvDevice::create(const std::string& family_name,
     return std::unique_ptr<RadvDevice>(new RadvDevice(std::move(impl)));
 }
 
+namespace {
+
+// The process's mapped bytes now (/proc/self/statm, first field, in pages).
+uint64_t mapped_bytes() {
+    std::ifstream in("/proc/self/statm");
+    uint64_t pages = 0;
+    in >> pages;
+    return pages * static_cast<uint64_t>(::sysconf(_SC_PAGESIZE));
+}
+
+// The child's answer on the pipe: "ok SUBGROUP\n" then "VALUE NAME\n" per statistic, or
+// "error MESSAGE\n".
+std::string encode(const std::optional<RadvStatistics>& s, const std::string& error) {
+    if (!s) return "error " + error + "\n";
+    std::string out = "ok " + std::to_string(s->subgroup_size) + "\n";
+    for (const auto& [name, value] : s->values) {
+        char number[32];
+        std::snprintf(number, sizeof number, "%.17g", value);
+        out += std::string(number) + " " + name + "\n";
+    }
+    return out;
+}
+
+std::optional<RadvStatistics> decode(const std::string& text, std::string& error) {
+    std::istringstream in(text);
+    std::string word;
+    in >> word;
+    if (word == "error") {
+        std::getline(in >> std::ws, error);
+        return std::nullopt;
+    }
+    RadvStatistics s;
+    if (word != "ok" || !(in >> s.subgroup_size)) {
+        error = "the compiling process ended without an answer";
+        return std::nullopt;
+    }
+    double value = 0;
+    std::string name;
+    while (in >> value && std::getline(in >> std::ws, name)) s.values[name] = value;
+    return s;
+}
+
+}  // namespace
+
 std::optional<RadvStatistics> RadvDevice::compile(const std::vector<uint32_t>& spirv,
-                                                  const DiagnosticConsumer& diag) {
+                                                  const DiagnosticConsumer& diag, double seconds,
+                                                  uint64_t memory_bytes, bool* timed_out) {
+    if (timed_out) *timed_out = false;
+    if (seconds <= 0) return compile_here(spirv, diag);
+    auto fail = [&](const std::string& m) -> std::optional<RadvStatistics> {
+        if (diag) diag({Severity::Error, "", 0, "gpu cost (RADV " + impl_->family + "): " + m});
+        return std::nullopt;
+    };
+    int fds[2];
+    if (::pipe(fds) != 0) return fail("pipe failed");
+    const uint64_t limit = memory_bytes ? mapped_bytes() + memory_bytes : 0;
+    const pid_t pid = ::fork();
+    if (pid < 0) {
+        ::close(fds[0]);
+        ::close(fds[1]);
+        return fail("fork failed");
+    }
+    if (pid == 0) {
+        // The child: this thread alone, the driver's state as the parent left it (a null
+        // device holds no kernel handle). Only _exit: the parent owns every other resource.
+        ::close(fds[0]);
+        if (limit) {
+            const rlimit r{limit, limit};
+            ::setrlimit(RLIMIT_AS, &r);
+        }
+        std::string error;
+        const auto stats = compile_here(spirv, [&](const Diagnostic& d) {
+            if (d.severity == Severity::Error && error.empty()) error = d.message;
+        });
+        const std::string answer = encode(stats, error);
+        for (std::size_t at = 0; at < answer.size();) {
+            const ssize_t n = ::write(fds[1], answer.data() + at, answer.size() - at);
+            if (n <= 0) break;
+            at += static_cast<std::size_t>(n);
+        }
+        ::_exit(stats ? 0 : 1);
+    }
+    ::close(fds[1]);
+    std::string text;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    bool late = false;
+    for (;;) {
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+                              deadline - std::chrono::steady_clock::now())
+                              .count();
+        if (left <= 0) {
+            late = true;
+            break;
+        }
+        pollfd p{fds[0], POLLIN, 0};
+        const int ready = ::poll(&p, 1, static_cast<int>(std::min<long long>(left, 1000)));
+        if (ready < 0 && errno != EINTR) break;
+        if (ready <= 0) continue;
+        char buf[4096];
+        const ssize_t n = ::read(fds[0], buf, sizeof buf);
+        if (n <= 0) break;  // end of the answer
+        text.append(buf, static_cast<std::size_t>(n));
+    }
+    ::close(fds[0]);
+    if (late) ::kill(pid, SIGKILL);
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    if (late) {
+        if (timed_out) *timed_out = true;
+        return fail(timeout_text(seconds));
+    }
+    std::string error;
+    auto stats = decode(text, error);
+    if (!stats && WIFSIGNALED(status)) {
+        // Past its memory limit the driver cannot allocate and aborts: stopped, like late.
+        if (timed_out && limit) *timed_out = true;
+        error = "the compiling process died (signal " + std::to_string(WTERMSIG(status)) +
+                (limit ? "; past its memory limit, the compile was stopped" : "") + ")";
+    }
+    if (!stats) return fail(error);
+    return stats;
+}
+
+std::optional<RadvStatistics> RadvDevice::compile_here(const std::vector<uint32_t>& spirv,
+                                                       const DiagnosticConsumer& diag) {
     auto fail = [&](const std::string& m) -> std::optional<RadvStatistics> {
         if (diag) diag({Severity::Error, "", 0, "gpu cost (RADV " + impl_->family + "): " + m});
         return std::nullopt;

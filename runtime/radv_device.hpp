@@ -41,11 +41,18 @@ class RadvDevice {
     const std::string& device_name() const;
 
     // Compiles the module's GLCompute entry point "main" with the pipeline layout its
-    // decorations declare, and returns the statistics of its one executable.
+    // decorations declare, and returns the statistics of its one executable. With a
+    // time limit (seconds > 0) the compile runs in a forked copy of this process, which
+    // is killed past the limit or when it needs more than `memory_bytes` beyond what
+    // the process already maps (ACO takes minutes and many GB on some unrolled
+    // modules); `timed_out` then says it was stopped. nullopt with a diagnostic on failure.
     std::optional<RadvStatistics> compile(const std::vector<uint32_t>& spirv,
-                                          const DiagnosticConsumer& diag);
+                                          const DiagnosticConsumer& diag, double seconds = 0,
+                                          uint64_t memory_bytes = 0, bool* timed_out = nullptr);
 
   private:
+    std::optional<RadvStatistics> compile_here(const std::vector<uint32_t>& spirv,
+                                               const DiagnosticConsumer& diag);
     struct Impl;
     explicit RadvDevice(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> impl_;

@@ -139,7 +139,9 @@ const QuantityScore* find_score(const ReportRow& r, const std::string& q) {
     return nullptr;
 }
 
-bool has_gpu_ratio(const ReportRow& r) { return r.gpu && r.gpu->ratio_to_point > 0; }
+bool has_gpu_ratio(const ReportRow& r) {
+    return r.gpu && r.gpu->ratio_to_point > 0;
+}
 
 }  // namespace
 
@@ -321,8 +323,8 @@ std::optional<Report> run_report(Evaluator& ev, const CaseSet& cases, const Repo
     };
     if (opt.gpu) {
         if (auto meter = GpuCostMeter::create(*opt.gpu, diag)) {
-            report.gpu_device = fmt::format("RADV {} (null device), Mesa {}", meter->family(),
-                                            meter->mesa());
+            report.gpu_device =
+                fmt::format("RADV {} (null device), Mesa {}", meter->family(), meter->mesa());
             for (std::size_t k = 0; k < variants.size(); ++k) {
                 gpu[k] = meter->measure(variants[k], as_warning);
                 if (!gpu[k] && diag)
@@ -538,16 +540,16 @@ std::string table(const std::vector<const ReportRow*>& rows, const Report& r) {
         const std::string q = second_quantity(row->variant);
         if (r.sweep()) {
             t += fmt::format("| `{}` | {:g} | {} | {} | {:.1f} | {:.2f} | {} | {} |\n", row->name,
-                             row->value, row->cases, gpu_cells(*row), row->ns_per_case,
-                             row->ratio, score_cell(*row, "specular"), score_cell(*row, q));
+                             row->value, row->cases, gpu_cells(*row), row->ns_per_case, row->ratio,
+                             score_cell(*row, "specular"), score_cell(*row, q));
         } else {
             const QuantityScore* d = find_score(*row, "diffuse");
             t += fmt::format(
                 "| `{}` | {} | {} | {} | {} | {} | {} | {:.1f} | {:.2f} | {} | {} | {} | {} |\n",
                 row->name, row->cases, gpu_cells(*row), row->spirv_instructions,
                 row->x86_instructions, bytes_text(row->table_bytes), row->texture_fetches,
-                row->ns_per_case, row->ratio, d ? g3(d->rel_l2) : "–",
-                score_cell(*row, "specular"), score_cell(*row, q), row->pareto ? "●" : "");
+                row->ns_per_case, row->ratio, d ? g3(d->rel_l2) : "–", score_cell(*row, "specular"),
+                score_cell(*row, q), row->pareto ? "●" : "");
         }
     }
     return t;
@@ -708,13 +710,14 @@ std::vector<std::pair<std::string, std::string>> report_pictures(const Report& r
         };
         auto time_ratio = [](const ReportRow& row) { return row.ratio; };
         const std::string time_label = "time per case / point light (lavapipe, median)";
-        const Plot p =
-            gpu ? cost_plot("GPU cost / point light (" + r.gpu_device +
-                                ": ACO inverse throughput, loops unrolled where constant)",
-                            [](const ReportRow& row) { return row.gpu->ratio_to_point; }, true)
-                : cost_plot(time_label, time_ratio, true);
+        const Plot p = gpu ? cost_plot(
+                                 "GPU cost / point light (" + r.gpu_device +
+                                     ": ACO inverse throughput, loops unrolled where constant)",
+                                 [](const ReportRow& row) { return row.gpu->ratio_to_point; }, true)
+                           : cost_plot(time_label, time_ratio, true);
         out.emplace_back("report.svg", svg_plot(p));
-        if (gpu) out.emplace_back("report_time.svg", svg_plot(cost_plot(time_label, time_ratio, false)));
+        if (gpu)
+            out.emplace_back("report_time.svg", svg_plot(cost_plot(time_label, time_ratio, false)));
         // The same against the deterministic cost: lavapipe's x86-64 instruction count.
         Plot q = p;
         q.title = "Error against code size: " + r.pattern + shape;

@@ -31,7 +31,8 @@ struct GpuCost {
     uint64_t latency = 0;             // ACO's estimate, cycles
     uint64_t inverse_throughput = 0;  // ACO's estimate, cycles per wave
     uint64_t waves_per_simd = 0;      // "Subgroups per SIMD": the occupancy registers allow
-    // ACO's inverse throughput of the module with its constant loops unrolled.
+    // ACO's inverse throughput of the module with its constant loops unrolled; 0 where
+    // that module's compile was stopped (GpuCostOptions::compile_seconds).
     uint64_t inverse_throughput_unrolled = 0;
     uint64_t cost = 0;  // max(inverse_throughput, inverse_throughput_unrolled)
     // cost over the point baseline's (report.hpp baseline_of), measured the same way;
@@ -55,6 +56,13 @@ inline constexpr const char* kRadvIcd = "/usr/share/vulkan/icd.d/radeon_icd.x86_
 struct GpuCostOptions {
     std::string family = "navi21";  // one of radv_families(), any case
     std::string icd = kRadvIcd;     // the RADV ICD manifest; its library_path is loaded
+    // Each compile runs in a forked copy of the process, stopped past this time or
+    // memory (beyond what the process maps): ACO runs for minutes and into many GB on a
+    // few unrolled modules (dist=phong,method=arvo: radvstats too). 0 s: in process, no
+    // limit. An unrolled module stopped so has inverse_throughput_unrolled 0 and the
+    // cost as written, with a warning; a module as written stopped so has no GpuCost.
+    double compile_seconds = 60;
+    uint64_t compile_memory_bytes = uint64_t{6} << 30;
 };
 
 // The chip families RADV_FORCE_FAMILY accepts in Mesa 22.3 (lower case). A name it
