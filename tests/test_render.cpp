@@ -486,8 +486,8 @@ TEST_CASE("render: the default variants are the selection, --variant overrides",
     Collect c2;
     CHECK_FALSE(render(s, opt, ev.get(), c2.consumer()));
     INFO(c2.all());
-    CHECK(c2.has("light=polygon, dist=ggx: no measured variant in the quality data (arealight "
-                 "quality regenerates it from the reports)"));
+    CHECK(c2.has("light=polygon, dist=ggx: no measured variant that the scene's quality allows "
+                 "in the quality data (arealight quality regenerates it from the reports)"));
 
     // A method no variant has fails the selection, but not pairs every --variant covers.
     s.quality.method = "magic";
