@@ -12,6 +12,7 @@
 #include <spirv-tools/optimizer.hpp>
 #include <sstream>
 
+#include "arealight/spirv_instructions.hpp"
 #include "file_includer.hpp"
 #include "spirv_tools_severity.hpp"
 
@@ -142,8 +143,8 @@ spvtools::MessageConsumer spirv_tools_consumer(const std::string& tool,
 // (ParseHelper.cpp), so the name is replaced in OpEntryPoint after translation.
 void rename_entry_point(std::vector<uint32_t>& spirv, const std::string& name) {
     constexpr uint32_t kOpEntryPoint = 15;
-    constexpr std::size_t kHeaderWords = 5;
-    for (std::size_t at = kHeaderWords; at < spirv.size();) {
+    // Not for_each_spirv_instruction: the walk rewrites the instruction it stands on.
+    for (std::size_t at = kSpirvHeaderWords; at < spirv.size();) {
         const std::size_t words = spirv[at] >> 16;
         if (words == 0 || at + words > spirv.size()) return;
         if ((spirv[at] & 0xffffu) != kOpEntryPoint) {
@@ -319,31 +320,19 @@ const char* to_string(ShaderStage stage) {
 }
 
 std::size_t spirv_instruction_count(const std::vector<uint32_t>& spirv) {
-    constexpr std::size_t kHeaderWords = 5;
     std::size_t count = 0;
-    // High 16 bits of an instruction's first word hold its total word count (SPIR-V spec 2.3).
-    for (std::size_t at = kHeaderWords; at < spirv.size();) {
-        const std::size_t words = spirv[at] >> 16;
-        if (words == 0 || at + words > spirv.size()) break;
-        ++count;
-        at += words;
-    }
+    for_each_spirv_instruction(spirv, [&](std::size_t, uint32_t, uint32_t) { ++count; });
     return count;
 }
 
 std::size_t spirv_texture_sample_count(const std::vector<uint32_t>& spirv) {
-    constexpr std::size_t kHeaderWords = 5;
     // OpImageSampleImplicitLod (87) .. OpImageSparseDrefGather (96 excluded: 95 is
     // OpImageFetch) and their sparse forms (305 .. 315): every instruction that reads
     // an image through a sampler or by texel (SPIR-V spec 3.37.10).
     auto samples = [](uint32_t op) { return (op >= 87 && op <= 95) || (op >= 305 && op <= 315); };
     std::size_t count = 0;
-    for (std::size_t at = kHeaderWords; at < spirv.size();) {
-        const std::size_t words = spirv[at] >> 16;
-        if (words == 0 || at + words > spirv.size()) break;
-        count += samples(spirv[at] & 0xffffu);
-        at += words;
-    }
+    for_each_spirv_instruction(spirv,
+                               [&](std::size_t, uint32_t, uint32_t op) { count += samples(op); });
     return count;
 }
 

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <map>
 #include <set>
 #include <tuple>
 #include <utility>
@@ -183,31 +184,36 @@ std::optional<std::vector<SelectedVariant>> select_variants(const Scene& scene,
 
     std::vector<SelectedVariant> out;
     bool ok = true;
-    // Methods are checked once per distribution's quality (its exclude names too), so that
-    // a misspelt name is one error, not one per light type.
-    std::set<Distribution> checked;
+    // Each distribution's quality, resolved and its method names checked once, so that a
+    // misspelt name is one error, not one per light type; nullopt where it is unusable.
+    struct Resolved {
+        SceneQuality q;
+        std::optional<Method> method;
+    };
+    std::map<Distribution, std::optional<Resolved>> resolved;
+    for (const auto& m : scene.materials) {
+        if (resolved.count(m.distribution)) continue;
+        std::string conflict;
+        Resolved r{effective_quality(scene, m.distribution, &conflict), std::nullopt};
+        bool usable = conflict.empty();
+        if (!usable) emit(diag, Severity::Error, conflict);
+        if (usable && r.q.method) {
+            r.method = checked_method(*r.q.method, "quality.method", diag);
+            usable = r.method.has_value();
+        }
+        if (usable)
+            for (const auto& name : r.q.exclude)
+                if (!checked_method(name, "quality.exclude", diag)) ok = false;
+        resolved[m.distribution] = usable ? std::optional<Resolved>(r) : std::nullopt;
+    }
     for (const auto& [light, dist] : pairs) {
         const std::string pair = pair_name(light, dist);
-        std::string conflict;
-        const SceneQuality q = effective_quality(scene, dist, &conflict);
-        if (!conflict.empty()) {
-            if (checked.insert(dist).second) emit(diag, Severity::Error, conflict);
+        if (!resolved.at(dist)) {
             ok = false;
             continue;
         }
-        std::optional<Method> method;
-        if (q.method) {
-            method = checked_method(*q.method, "quality.method",
-                                    checked.count(dist) ? DiagnosticConsumer{} : diag);
-            if (!method) {
-                checked.insert(dist);
-                ok = false;
-                continue;
-            }
-        }
-        if (checked.insert(dist).second)
-            for (const auto& name : q.exclude)
-                if (!checked_method(name, "quality.exclude", diag)) ok = false;
+        const SceneQuality& q = resolved.at(dist)->q;
+        const std::optional<Method>& method = resolved.at(dist)->method;
         if (!has_family(light, dist, method)) {
             emit(diag, Severity::Error,
                  method ? fmt::format("{}: no variant has method={} ('arealight variants' lists "

@@ -3,12 +3,12 @@
 #include <spirv-tools/optimizer.hpp>
 #include <string>
 
+#include "arealight/spirv_instructions.hpp"
 #include "spirv_tools_severity.hpp"
 
 namespace arealight {
 namespace {
 
-constexpr std::size_t kHeaderWords = 5;
 constexpr uint32_t kOpLoopMerge = 246;  // SPIR-V spec 3.42.17
 // Loop Control mask bits (SPIR-V spec 3.23).
 constexpr uint32_t kLoopUnroll = 0x1, kLoopDontUnroll = 0x2;
@@ -18,13 +18,10 @@ constexpr spv_target_env kSpirvOptDefaultEnv = SPV_ENV_UNIVERSAL_1_5;
 // Calls f(word index of the instruction) for each OpLoopMerge.
 template <typename F>
 void for_each_loop_merge(const std::vector<uint32_t>& spirv, F&& f) {
-    for (std::size_t at = kHeaderWords; at < spirv.size();) {
-        const uint32_t words = spirv[at] >> 16;
-        if (words == 0 || at + words > spirv.size()) return;
-        // Operands: merge block, continue target, loop control.
-        if ((spirv[at] & 0xffffu) == kOpLoopMerge && words >= 4) f(at);
-        at += words;
-    }
+    // Operands: merge block, continue target, loop control.
+    for_each_spirv_instruction(spirv, [&](std::size_t at, uint32_t words, uint32_t op) {
+        if (op == kOpLoopMerge && words >= 4) f(at);
+    });
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "spirv_layout.hpp"
 
+#include "arealight/spirv_instructions.hpp"
+
 #include <algorithm>
 #include <cstring>
 #include <map>
@@ -42,7 +44,6 @@ enum : uint32_t {
 enum : uint32_t { kDimBuffer = 5, kDimSubpassData = 6, kGLCompute = 5, kSampledStorage = 2 };
 
 constexpr uint32_t kMagic = 0x07230203;
-constexpr std::size_t kHeaderWords = 5;
 
 // One pass over the module: each result id's defining instruction and the
 // decorations the layout needs.
@@ -51,17 +52,13 @@ class Module {
     explicit Module(const std::vector<uint32_t>& w) : w_(w) {}
 
     bool scan(const std::string& entry, std::string& why) {
-        if (w_.size() < kHeaderWords || w_[0] != kMagic) {
+        if (w_.size() < kSpirvHeaderWords || w_[0] != kMagic) {
             why = "not a SPIR-V module (no magic number)";
             return false;
         }
         bool found = false;
-        for (std::size_t at = kHeaderWords; at < w_.size();) {
-            const uint32_t n = w_[at] >> 16, op = w_[at] & 0xffffu;
-            if (n == 0 || at + n > w_.size()) {
-                why = "malformed instruction at word " + std::to_string(at);
-                return false;
-            }
+        const std::size_t stop = for_each_spirv_instruction(w_, [&](std::size_t at, uint32_t n,
+                                                                   uint32_t op) {
             const uint32_t* in = &w_[at];
             if (op == kOpEntryPoint && n >= 4 && in[1] == kGLCompute)
                 found = found || literal(in + 3, n - 3) == entry;
@@ -76,7 +73,10 @@ class Module {
             else if ((op == kOpConstant || op == kOpSpecConstant || op == kOpVariable) && n >= 4)
                 def_[in[2]] = {op, at};
             if (op == kOpVariable && n >= 4) variables_.push_back(at);
-            at += n;
+        });
+        if (stop != w_.size()) {
+            why = "malformed instruction at word " + std::to_string(stop);
+            return false;
         }
         if (!found) why = "no GLCompute entry point named '" + entry + "'";
         return found;
