@@ -6,9 +6,14 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 V=../shared/validation
-al=build/arealight
-sets=(--cases $V/typical.cases.json --cases $V/horizon.cases.json
-      --cases $V/glossy.cases.json --cases $V/stress.cases.json)
+# AREALIGHT=/path/to/a/copy lets a long run go on while build/ is rebuilt.
+al=${AREALIGHT:-build/arealight}
+# The public sets with their independent reference values (so no report recomputes the
+# oracle), the exactly degenerate views among them.
+sets=()
+for s in typical horizon glossy stress degenerate; do
+  sets+=(--cases $V/$s.cases.json --ref $V/$s.ref.json)
+done
 $al report "${sets[@]}" --variants dist=phong,light=polygon --out docs/report
 $al report "${sets[@]}" --variants dist=phong,light=polygon,verts=8,sided=any --out docs/report-phong
 for d in blinn beckmann ggx; do
