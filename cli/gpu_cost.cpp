@@ -22,6 +22,7 @@ CLI::App* add_gpu_cost_command(CLI::App& app, GpuCostArgs& args) {
     cmd->add_option("--spv", args.spv, "SPIR-V compute module (repeatable)")
         ->check(CLI::ExistingFile);
     add_gpu_family_option(cmd, args.gpu_family);
+    add_gpu_cache_option(cmd, args.gpu_cache);
     return cmd;
 }
 
@@ -38,6 +39,7 @@ int run_gpu_cost(const GpuCostArgs& args) {
     }
     GpuCostOptions opt;
     opt.family = args.gpu_family;
+    opt.cache_dir = args.gpu_cache;
     auto meter = GpuCostMeter::create(opt, print_diagnostic);
     if (!meter) return 3;
     auto line = [](const std::string& key, const std::string& what, const GpuCost& c) {

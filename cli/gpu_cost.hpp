@@ -13,6 +13,7 @@ namespace arealight::cli {
 struct GpuCostArgs {
     std::vector<std::string> variants, spv;
     std::string gpu_family = GpuCostOptions{}.family;
+    std::string gpu_cache;  // --gpu-cache / AREALIGHT_GPU_CACHE
 };
 
 CLI::App* add_gpu_cost_command(CLI::App& app, GpuCostArgs& args);

@@ -25,4 +25,13 @@ inline void add_gpu_family_option(CLI::App* cmd, std::string& family) {
         ->capture_default_str();
 }
 
+// `--gpu-cache DIR` (or AREALIGHT_GPU_CACHE): GpuCostOptions::cache_dir. The folder is
+// created when missing.
+inline void add_gpu_cache_option(CLI::App* cmd, std::string& dir) {
+    cmd->add_option("--gpu-cache", dir,
+                    "folder that keeps RADV's statistics per module, so that a module "
+                    "compiled once (in any run) is not compiled again; default: none")
+        ->envname("AREALIGHT_GPU_CACHE");
+}
+
 }  // namespace arealight::cli

@@ -105,9 +105,11 @@ int run_compare(const std::string& ref_path, const std::string& out_path, double
 
 int run_bench(const std::string& cases_path, const std::vector<std::string>& names,
               const std::vector<double>& exponents, const std::string& backend,
-              std::size_t min_cases, int repeats, const std::string& gpu_family) {
+              std::size_t min_cases, int repeats, const std::string& gpu_family,
+              const std::string& gpu_cache) {
     arealight::BenchOptions opt;
     opt.gpu->family = gpu_family;
+    opt.gpu->cache_dir = gpu_cache;
     for (const auto& name : names) {
         auto v = arealight::parse_variant(name, print_diagnostic);
         if (!v) return kBadInput;
@@ -162,6 +164,7 @@ struct ReportArgs {
     double dispatch_ms = 20;
     unsigned threads = 1;
     std::string gpu_family = arealight::GpuCostOptions{}.family;
+    std::string gpu_cache;
 };
 
 // The options report and sweep share.
@@ -180,6 +183,7 @@ void add_measure_options(CLI::App* cmd, ReportArgs& a) {
         ->check(CLI::Range(1u, 256u))
         ->capture_default_str();
     arealight::cli::add_gpu_family_option(cmd, a.gpu_family);
+    arealight::cli::add_gpu_cache_option(cmd, a.gpu_cache);
 }
 
 // report and sweep: measure, then write every file (nothing is written on failure).
@@ -201,6 +205,7 @@ int run_report(const ReportArgs& a, bool sweep) {
     opt.dispatch_seconds = a.dispatch_ms * 1e-3;
     opt.threads = a.threads;
     opt.gpu->family = a.gpu_family;
+    opt.gpu->cache_dir = a.gpu_cache;
     if (sweep) {
         auto bad = [&](const std::string& m) {
             print_diagnostic({arealight::Severity::Error, "", 0, "sweep: " + m});
@@ -373,6 +378,8 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     std::string bench_gpu_family = arealight::GpuCostOptions{}.family;
     arealight::cli::add_gpu_family_option(bench, bench_gpu_family);
+    std::string bench_gpu_cache;
+    arealight::cli::add_gpu_cache_option(bench, bench_gpu_cache);
 
     ReportArgs rep, swp;
     rep.threads = swp.threads = threads;
@@ -448,7 +455,7 @@ int main(int argc, char** argv) {
     if (generate->parsed()) return arealight::cli::run_generate(generate_args, print_diagnostic);
     if (bench->parsed())
         return run_bench(cases_path, bench_variants, exponents, backend, min_cases, repeats,
-                         bench_gpu_family);
+                         bench_gpu_family, bench_gpu_cache);
     if (compare->parsed()) return run_compare(ref_path, out_path, floor);
     if (reference->parsed()) return run_reference(cases_path, out_path, rel_tol, threads, table);
     if (fit_ltc->parsed()) return arealight::cli::run_fit_ltc(fit_args);

@@ -23,6 +23,7 @@ CLI::App* add_quality_command(CLI::App& app, QualityArgs& args) {
     cmd->add_option("--out", args.out, "quality file to write (data/quality/measured.json)")
         ->required();
     add_gpu_family_option(cmd, args.gpu_family);
+    add_gpu_cache_option(cmd, args.gpu_cache);
     return cmd;
 }
 
@@ -47,6 +48,7 @@ int run_quality(const QualityArgs& args) {
     const auto t0 = std::chrono::steady_clock::now();
     GpuCostOptions gopt;
     gopt.family = args.gpu_family;
+    gopt.cache_dir = args.gpu_cache;
     std::size_t measured = 0;
     if (auto meter = GpuCostMeter::create(gopt, print_diagnostic)) {
         ProgressPrinter progress("gpu cost", "variants");

@@ -15,6 +15,7 @@ struct QualityArgs {
     std::vector<std::string> reports;
     std::string out;
     std::string gpu_family = GpuCostOptions{}.family;
+    std::string gpu_cache;  // --gpu-cache / AREALIGHT_GPU_CACHE
 };
 
 CLI::App* add_quality_command(CLI::App& app, QualityArgs& args);

@@ -3,9 +3,11 @@
 // a case's are (CONTRACT 7: "Lights and materials use the fields of section 3").
 #pragma once
 
+#include <initializer_list>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "arealight/case.hpp"
 #include "arealight/case_io.hpp"
@@ -45,14 +47,23 @@ bool check_format(const nlohmann::json& doc, const std::string& format, Reporter
 // recurses once per level of nesting and would overflow the stack on a deep one).
 std::string describe(const nlohmann::json& v);
 
+// The names an object may hold (CONTRACT 3): every field of `obj` that is not among
+// `known`, nor `extra`, nor "comment", nor named "x-..." is an error under `where`, the
+// field named `prefix` + its name, with the nearest known name as a suggestion.
+using FieldNames = std::initializer_list<std::string_view>;
+void check_fields(Reporter& rep, const std::string& where, const std::string& prefix,
+                  const nlohmann::json& obj, FieldNames known, FieldNames extra = {});
+
 // Reads one light object (a case's "light" value) into `out`, every error reported under
 // `where` with its field named `prefix` + the light's own field ("light." in a case file,
-// "" in a scene, whose lights are listed on their own).
+// "" in a scene, whose lights are listed on their own). `extra`: further fields the
+// caller's format allows there (a scene light's "intensity").
 void read_light_object(Reporter& rep, const std::string& where, const std::string& prefix,
-                       const nlohmann::json& light, const ValidationTolerances& tol, Light& out);
+                       const nlohmann::json& light, const ValidationTolerances& tol, Light& out,
+                       FieldNames extra = {});
 
-// The same for a material object (a case's "material" value).
+// The same for a material object (a case's "material" value; a scene's adds "quality").
 void read_material_object(Reporter& rep, const std::string& where, const std::string& prefix,
-                          const nlohmann::json& material, Material& out);
+                          const nlohmann::json& material, Material& out, FieldNames extra = {});
 
 }  // namespace arealight::io_detail

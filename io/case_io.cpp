@@ -5,11 +5,14 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <cfloat>
 #include <cmath>
 #include <cstring>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <vector>
 
 #include "arealight/atomic_file.hpp"
 #include "case_fields.hpp"
@@ -80,6 +83,51 @@ std::string describe(const json& v) {
     return v.dump();
 }
 
+namespace {
+
+// Levenshtein distance: the number of one-character edits from a to b.
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t above = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
+}
+
+}  // namespace
+
+void check_fields(Reporter& rep, const std::string& where, const std::string& prefix,
+                  const json& obj, FieldNames known, FieldNames extra) {
+    if (!obj.is_object()) return;
+    for (auto it = obj.begin(); it != obj.end(); ++it) {
+        const std::string& name = it.key();
+        if (name == "comment" || name.rfind("x-", 0) == 0) continue;
+        auto listed = [&](FieldNames names) {
+            return std::find(names.begin(), names.end(), std::string_view(name)) != names.end();
+        };
+        if (listed(known) || listed(extra)) continue;
+        std::string_view nearest;
+        std::size_t best = SIZE_MAX;
+        for (FieldNames names : {known, extra})
+            for (std::string_view k : names)
+                if (const std::size_t d = edit_distance(name, k); d < best) {
+                    best = d;
+                    nearest = k;
+                }
+        rep.error(where, prefix + name,
+                  nearest.empty() ? std::string("unknown field")
+                                  : fmt::format("unknown field (did you mean '{}{}'?)", prefix,
+                                                nearest));
+    }
+}
+
 bool check_format(const json& doc, const std::string& format, Reporter& rep) {
     if (!doc.is_object()) {
         rep.error("", "format", "the file must be a JSON object");
@@ -107,9 +155,19 @@ using ordered_json = nlohmann::ordered_json;
 
 // Coordinates beyond this would overflow the products the shaders and the oracle form.
 constexpr double kMaxCoordinate = 1e15;
-// Relative tolerance of the disk and ellipsoid orthogonality checks.
-constexpr double kOrthogonalRel = 1e-6;
 constexpr double kPi = 3.14159265358979323846;
+
+// The spacing of fp32 values at magnitude x: what rounding a coordinate of that size to
+// fp32 can move it by, twice over.
+double fp32_ulp(double x) {
+    x = std::abs(x);
+    if (!(x >= static_cast<double>(FLT_MIN))) return std::ldexp(1.0, -149);
+    return std::ldexp(1.0, std::ilogb(x) - 23);
+}
+
+double max_abs(const Vec3& a) {
+    return std::max({std::abs(a[0]), std::abs(a[1]), std::abs(a[2])});
+}
 
 Vec3 sub(const Vec3& a, const Vec3& b) {
     return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
@@ -211,6 +269,45 @@ class CaseReader {
         if (ok) check_polygon(light.vertices);
     }
 
+    // Whether two edges that share no vertex cross, seen along the polygon's normal (the
+    // largest cross product of two vertices about the centroid: a symmetric bowtie has no
+    // Newell area); then an error naming them. A convex outline never crosses itself.
+    bool crosses_itself(const std::vector<Vec3>& V, const Vec3& centroid) {
+        const std::size_t n = V.size();
+        if (n < 4) return false;
+        Vec3 axis{};
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = i + 1; j < n; ++j) {
+                const Vec3 c = cross(sub(V[i], centroid), sub(V[j], centroid));
+                if (dot(c, c) > dot(axis, axis)) axis = c;
+            }
+        if (!(norm(axis) > 0.0)) return false;  // collinear: the zero-area check says so
+        // Drop the axis's largest component: the other two span the plane's projection.
+        int drop = 0;
+        for (int k = 1; k < 3; ++k)
+            if (std::abs(axis[k]) > std::abs(axis[drop])) drop = k;
+        const int ux = drop == 0 ? 1 : 0, uy = drop == 2 ? 1 : 2;
+        auto orient = [&](const Vec3& a, const Vec3& b, const Vec3& c) {
+            const double s = (b[ux] - a[ux]) * (c[uy] - a[uy]) - (b[uy] - a[uy]) * (c[ux] - a[ux]);
+            return (s > 0.0) - (s < 0.0);
+        };
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = i + 2; j < n; ++j) {
+                if (i == 0 && j == n - 1) continue;  // adjacent through the closing edge
+                const Vec3 &a = V[i], &b = V[(i + 1) % n], &c = V[j], &d = V[(j + 1) % n];
+                const int o1 = orient(a, b, c), o2 = orient(a, b, d);
+                const int o3 = orient(c, d, a), o4 = orient(c, d, b);
+                if (o1 * o2 < 0 && o3 * o4 < 0) {
+                    fail(light_ + "vertices",
+                         fmt::format("edges {}-{} and {}-{} cross: the polygon is "
+                                     "self-intersecting (not convex)",
+                                     i, (i + 1) % n, j, (j + 1) % n));
+                    return true;
+                }
+            }
+        return false;
+    }
+
     // The geometric checks of a polygon, in dependency order; the first failure ends them,
     // since each later check is meaningless on a polygon that failed an earlier one.
     void check_polygon(const std::vector<Vec3>& V) {
@@ -237,19 +334,26 @@ class CaseReader {
             const Vec3 c = cross(sub(V[i], centroid), sub(V[(i + 1) % n], centroid));
             for (int k = 0; k < 3; ++k) newell[k] += c[k];
         }
+        if (crosses_itself(V, centroid)) return;
         const double nl = norm(newell);
         if (!(nl > 0.0)) {
             fail(light_ + "vertices", "the polygon has zero area");
             return;
         }
         const Vec3 N = {newell[0] / nl, newell[1] / nl, newell[2] / nl};
+        double largest = 0.0;
+        for (const auto& x : V) largest = std::max(largest, max_abs(x));
+        const double off_plane =
+            tol_.coplanar_rel * diameter + tol_.fp32_ulps * fp32_ulp(largest);
         for (std::size_t i = 0; i < n; ++i) {
             const double d = std::abs(dot(N, sub(V[i], centroid)));
-            if (d > tol_.coplanar_rel * diameter) {
+            if (d > off_plane) {
                 fail(light_ + fmt::format("vertices[{}]", i),
-                     fmt::format("is {:.3g} off the polygon's plane, more than {:g} of its "
-                                 "diameter {:.3g}: not coplanar",
-                                 d, tol_.coplanar_rel, diameter));
+                     fmt::format("is {:.3g} off the polygon's plane, more than the tolerance "
+                                 "{:.3g} ({:g} of its diameter {:.3g} plus {:g} fp32 ulp at "
+                                 "{:.3g}): not coplanar",
+                                 d, off_plane, tol_.coplanar_rel, diameter, tol_.fp32_ulps,
+                                 largest));
                 return;
             }
         }
@@ -279,8 +383,23 @@ class CaseReader {
         }
     }
 
-    bool orthogonal(const Vec3& a, const Vec3& b) {
-        return std::abs(dot(a, b)) <= kOrthogonalRel * norm(a) * norm(b);
+    // |a.b| within orthogonal_rel |a||b| plus what fp32 rounding of each vector's
+    // components moves the product by (CONTRACT 3); else an error on `path`.
+    void check_orthogonal(const Vec3& a, const Vec3& b, const std::string& path,
+                          const std::string& other) {
+        const double la = norm(a), lb = norm(b);
+        const double tol = tol_.orthogonal_rel * la * lb +
+                           tol_.fp32_ulps * (fp32_ulp(max_abs(a)) * lb + fp32_ulp(max_abs(b)) * la);
+        const double d = std::abs(dot(a, b));
+        if (d > tol)
+            fail(path, fmt::format("must be orthogonal to {} (|{}.{}| is {:.3g}, more than the "
+                                   "tolerance {:.3g})",
+                                   other, other, path, d, tol));
+    }
+
+    void known(const json& obj, const std::string& prefix, io_detail::FieldNames names,
+               io_detail::FieldNames extra = {}) {
+        io_detail::check_fields(rep_, where_, prefix, obj, names, extra);
     }
 
     void read_two_sided(const json& L, Light& light) {
@@ -305,7 +424,7 @@ class CaseReader {
         read_light_fields(*it, light);
     }
 
-    void read_light_fields(const json& L, Light& light) {
+    void read_light_fields(const json& L, Light& light, io_detail::FieldNames extra = {}) {
         auto t = L.find("type");
         if (t == L.end() || !t->is_string()) {
             fail(light_ + "type", t == L.end() ? "missing" : "must be a string");
@@ -314,24 +433,26 @@ class CaseReader {
         const std::string type = t->get<std::string>();
         if (type == "polygon") {
             light.type = LightType::Polygon;
+            known(L, light_, {"type", "vertices", "two_sided"}, extra);
             read_two_sided(L, light);
             read_polygon(L, light);
         } else if (type == "disk") {
             light.type = LightType::Disk;
+            known(L, light_, {"type", "center", "u", "v", "two_sided"}, extra);
             read_two_sided(L, light);
             vec3_field(L, "center", light_ + "center", light.center);
             const bool u = direction(L, "u", light_ + "u", light.u);
             const bool v = direction(L, "v", light_ + "v", light.v);
-            if (u && v && !orthogonal(light.u, light.v))
-                fail(light_ + "v", fmt::format("must be orthogonal to {}u (|u.v| <= {:g} |u||v|)",
-                                               light_, kOrthogonalRel));
+            if (u && v) check_orthogonal(light.u, light.v, light_ + "v", light_ + "u");
         } else if (type == "sphere") {
             light.type = LightType::Sphere;
+            known(L, light_, {"type", "center", "radius"}, extra);
             vec3_field(L, "center", light_ + "center", light.center);
             if (number(L, "radius", light_ + "radius", light.radius) && !(light.radius > 0.0))
                 fail(light_ + "radius", fmt::format("{:g} is not positive", light.radius));
         } else if (type == "ellipsoid") {
             light.type = LightType::Ellipsoid;
+            known(L, light_, {"type", "center", "axes"}, extra);
             vec3_field(L, "center", light_ + "center", light.center);
             read_axes(L, light);
         } else {
@@ -361,9 +482,8 @@ class CaseReader {
         if (!ok) return;
         for (std::size_t i = 0; i < 3; ++i)
             for (std::size_t j = i + 1; j < 3; ++j)
-                if (!orthogonal(light.axes[i], light.axes[j]))
-                    fail(light_ + fmt::format("axes[{}]", j),
-                         fmt::format("must be orthogonal to {}axes[{}]", light_, i));
+                check_orthogonal(light.axes[i], light.axes[j], light_ + fmt::format("axes[{}]", j),
+                                 light_ + fmt::format("axes[{}]", i));
     }
 
     void read_material(const json& c, Material& m) {
@@ -375,7 +495,7 @@ class CaseReader {
         read_material_fields(*it, m);
     }
 
-    void read_material_fields(const json& M, Material& m) {
+    void read_material_fields(const json& M, Material& m, io_detail::FieldNames extra = {}) {
         auto d = M.find("distribution");
         if (d == M.end() || !d->is_string()) {
             fail(material_ + "distribution", d == M.end() ? "missing" : "must be a string");
@@ -384,6 +504,11 @@ class CaseReader {
         const std::string name = d->get<std::string>();
         if (name == "phong" || name == "blinn") {
             m.distribution = name == "phong" ? Distribution::Phong : Distribution::Blinn;
+            // Phong has no Fresnel factor (CONTRACT 2): f0 is no field of its.
+            if (name == "phong")
+                known(M, material_, {"distribution", "exponent"}, extra);
+            else
+                known(M, material_, {"distribution", "exponent", "f0"}, extra);
             if (number(M, "exponent", material_ + "exponent", m.exponent) &&
                 !(m.exponent >= 1.0 && m.exponent <= 100000.0)) {
                 fail(material_ + "exponent",
@@ -391,6 +516,7 @@ class CaseReader {
             }
         } else if (name == "beckmann" || name == "ggx") {
             m.distribution = name == "ggx" ? Distribution::Ggx : Distribution::Beckmann;
+            known(M, material_, {"distribution", "alpha", "f0"}, extra);
             if (number(M, "alpha", material_ + "alpha", m.alpha) &&
                 !(m.alpha >= 0.001 && m.alpha <= 1.0)) {
                 fail(material_ + "alpha", fmt::format("{:g} is outside [0.001, 1]", m.alpha));
@@ -400,7 +526,6 @@ class CaseReader {
                  "unknown distribution '" + name + "' (expected phong, blinn, beckmann or ggx)");
             return;
         }
-        // Phong has no Fresnel factor: its f0 is an unknown field and ignored (CONTRACT 2, 3).
         if (m.distribution != Distribution::Phong) read_f0(M, m);
     }
 
@@ -438,14 +563,15 @@ void put(ordered_json& j, const char* key, const std::optional<double>& v) {
 namespace io_detail {
 
 void read_light_object(Reporter& rep, const std::string& where, const std::string& prefix,
-                       const json& light, const ValidationTolerances& tol, Light& out) {
-    CaseReader(rep, where, tol, prefix, {}).read_light_fields(light, out);
+                       const json& light, const ValidationTolerances& tol, Light& out,
+                       FieldNames extra) {
+    CaseReader(rep, where, tol, prefix, {}).read_light_fields(light, out, extra);
 }
 
 void read_material_object(Reporter& rep, const std::string& where, const std::string& prefix,
-                          const json& material, Material& out) {
+                          const json& material, Material& out, FieldNames extra) {
     const ValidationTolerances unused;
-    CaseReader(rep, where, unused, {}, prefix).read_material_fields(material, out);
+    CaseReader(rep, where, unused, {}, prefix).read_material_fields(material, out, extra);
 }
 
 }  // namespace io_detail
@@ -458,6 +584,7 @@ std::optional<CaseSet> parse_cases(const std::string& text, const std::string& n
     const json& doc = *parsed;
     Reporter rep(name, diag);
     if (!io_detail::check_format(doc, "arealight-cases/1", rep)) return std::nullopt;
+    io_detail::check_fields(rep, "", "", doc, {"format", "cases"});
     auto cs = doc.find("cases");
     if (cs == doc.end() || !cs->is_array()) {
         rep.error("", "cases", cs == doc.end() ? "missing" : "must be an array of cases");
@@ -484,6 +611,7 @@ std::optional<CaseSet> parse_cases(const std::string& text, const std::string& n
                 rep.error(where, "id", "duplicates an earlier case's id");
         }
         CaseReader r(rep, where, tol);
+        io_detail::check_fields(rep, where, "", c, {"id", "p", "n", "v", "light", "material"});
         r.vec3_field(c, "p", "p", out.p);
         r.direction(c, "n", "n", out.n);
         r.direction(c, "v", "v", out.v);

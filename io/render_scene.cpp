@@ -72,6 +72,7 @@ class SceneReader {
             return;
         }
         const json& c = *it;
+        io_detail::check_fields(rep_, "camera", "", c, {"eye", "target", "up", "fov_deg"});
         const bool eye = vec3(c, "eye", "camera", cam.eye);
         const bool target = vec3(c, "target", "camera", cam.target);
         const bool up = nonzero(c, "up", "camera", cam.up);
@@ -107,15 +108,20 @@ class SceneReader {
             fail(where, "type", t == o.end() ? "missing" : "must be a string");
         } else if (*t == "plane") {
             out.type = ObjectType::Plane;
+            io_detail::check_fields(rep_, where, "", o,
+                                    {"type", "point", "normal", "material", "albedo"});
             vec3(o, "point", where, out.point);
             nonzero(o, "normal", where, out.normal);
         } else if (*t == "sphere") {
             out.type = ObjectType::Sphere;
+            io_detail::check_fields(rep_, where, "", o,
+                                    {"type", "center", "radius", "material", "albedo"});
             vec3(o, "center", where, out.center);
             if (number(o, "radius", where, out.radius) && !(out.radius > 0))
                 fail(where, "radius", fmt::format("{:g} is not positive", out.radius));
         } else if (*t == "box") {
             out.type = ObjectType::Box;
+            io_detail::check_fields(rep_, where, "", o, {"type", "min", "max", "material", "albedo"});
             if (vec3(o, "min", where, out.min) && vec3(o, "max", where, out.max)) {
                 for (int k = 0; k < 3; ++k) {
                     if (!(out.min[k] < out.max[k])) {

@@ -51,6 +51,8 @@ void read_flag(const json& q, const char* key, const std::string& where, const s
 // ("" for the scene, "material N"), `field` its path ("quality.").
 SceneQuality read_quality_object(const json& q, const std::string& where, Reporter& rep) {
     const std::string field = "quality.";
+    io_detail::check_fields(rep, where, field, q,
+                            {"max_error", "method", "precision", "tables", "patented", "exclude"});
     SceneQuality out;
     if (auto e = q.find("max_error"); e != q.end()) {
         if (!e->is_number())
@@ -107,13 +109,17 @@ std::optional<Scene> parse_scene(const std::string& text, const std::string& nam
     const json& doc = *parsed;
     Reporter rep(name, diag);
     if (!io_detail::check_format(doc, kFormat, rep)) return std::nullopt;
+    // camera and objects are arealight render's (io/render_scene.cpp checks them).
+    io_detail::check_fields(rep, "", "", doc,
+                            {"format", "lights", "materials", "quality", "camera", "objects"});
     Scene scene;
     if (const json* lights = nonempty_array(doc, "lights", "lights", rep)) {
         for (std::size_t i = 0; i < lights->size(); ++i) {
             const std::string where = fmt::format("light {}", i);
             Light light;
             if ((*lights)[i].is_object())
-                io_detail::read_light_object(rep, where, "", (*lights)[i], tol, light);
+                io_detail::read_light_object(rep, where, "", (*lights)[i], tol, light,
+                                             {"intensity"});
             else
                 rep.error(where, "", "must be an object");
             scene.lights.push_back(std::move(light));
@@ -125,7 +131,8 @@ std::optional<Scene> parse_scene(const std::string& text, const std::string& nam
             Material material;
             std::optional<SceneQuality> quality;
             if ((*materials)[i].is_object()) {
-                io_detail::read_material_object(rep, where, "", (*materials)[i], material);
+                io_detail::read_material_object(rep, where, "", (*materials)[i], material,
+                                                {"quality"});
                 read_quality((*materials)[i], where, quality, rep);
             } else {
                 rep.error(where, "", "must be an object");

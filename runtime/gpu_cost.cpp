@@ -1,11 +1,17 @@
 #include "arealight/gpu_cost.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
 #include <utility>
 
+#include "arealight/atomic_file.hpp"
 #include "arealight/evaluator.hpp"
+#include "arealight/read_file.hpp"
 #include "arealight/report.hpp"
 #include "arealight/unroll_loops.hpp"
 #include "arealight/variant.hpp"
@@ -27,6 +33,51 @@ constexpr const char* kWavesPerSimd = "Subgroups per SIMD";
 std::string mesa_version(const std::string& driver_info) {
     const std::string prefix = "Mesa ";
     return driver_info.rfind(prefix, 0) == 0 ? driver_info.substr(prefix.size()) : driver_info;
+}
+
+// FNV-1a over the module's bytes: with the word count beside it in the file name, a
+// collision between two of the few thousand modules a project compiles is negligible.
+uint64_t module_hash(const std::vector<uint32_t>& words) {
+    uint64_t h = 1469598103934665603ull;
+    for (uint32_t w : words)
+        for (int b = 0; b < 4; ++b) {
+            h ^= (w >> (8 * b)) & 0xffu;
+            h *= 1099511628211ull;
+        }
+    return h;
+}
+
+// The cache file of a module, "<dir>/<family>-<mesa>-<words>-<hash>.json".
+std::string cache_path(const GpuCostOptions& opt, const std::string& family,
+                       const std::string& mesa, const std::vector<uint32_t>& words) {
+    return fmt::format("{}/{}-{}-{}-{:016x}.json", opt.cache_dir, family, mesa, words.size(),
+                       module_hash(words));
+}
+
+std::optional<RadvStatistics> read_cached(const std::string& path) {
+    // A missing or unreadable entry is a miss, never an error.
+    auto text = read_file(path, nullptr);
+    if (!text) return std::nullopt;
+    const auto doc = nlohmann::json::parse(*text, nullptr, false);
+    if (!doc.is_object() || !doc.contains("subgroup_size") || !doc.contains("values") ||
+        !doc["subgroup_size"].is_number_unsigned() || !doc["values"].is_object())
+        return std::nullopt;
+    RadvStatistics s;
+    s.subgroup_size = doc["subgroup_size"].get<uint32_t>();
+    for (auto it = doc["values"].begin(); it != doc["values"].end(); ++it) {
+        if (!it->is_number()) return std::nullopt;
+        s.values[it.key()] = it->get<double>();
+    }
+    return s;
+}
+
+void write_cached(const std::string& path, const RadvStatistics& s) {
+    nlohmann::json doc;
+    doc["subgroup_size"] = s.subgroup_size;
+    doc["values"] = nlohmann::json::object();
+    for (const auto& [name, value] : s.values) doc["values"][name] = value;
+    // A cache that cannot be written only costs the next run a compile.
+    write_file_atomic(path, doc.dump() + "\n", nullptr);
 }
 
 }  // namespace
@@ -66,9 +117,17 @@ struct GpuCostMeter::Impl {
         stopped = false;
         auto it = compiled.find(spirv);
         if (it == compiled.end()) {
-            auto stats = device->compile(spirv, diag, opt.compile_seconds, opt.compile_memory_bytes,
-                                         &stopped);
-            if (!stats && !stopped) return nullptr;
+            const std::string path =
+                opt.cache_dir.empty() ? "" : cache_path(opt, device->family(), mesa, spirv);
+            std::optional<RadvStatistics> stats;
+            if (!path.empty()) stats = read_cached(path);
+            if (!stats) {
+                stats = device->compile(spirv, diag, opt.compile_seconds,
+                                        opt.compile_memory_bytes, &stopped);
+                if (!stats && !stopped) return nullptr;
+                // A stopped compile depends on the machine's load: not remembered on disk.
+                if (stats && !path.empty()) write_cached(path, *stats);
+            }
             it = compiled.emplace(spirv, std::move(stats)).first;
         }
         stopped = !it->second;
@@ -94,6 +153,14 @@ std::unique_ptr<GpuCostMeter> GpuCostMeter::create(const GpuCostOptions& opt,
                                                    const DiagnosticConsumer& diag) {
     auto device = RadvDevice::create(opt.family, opt.icd, diag);
     if (!device) return nullptr;
+    if (!opt.cache_dir.empty()) {
+        std::error_code ec;
+        std::filesystem::create_directories(opt.cache_dir, ec);
+        if (ec && diag)
+            diag({Severity::Warning, opt.cache_dir, 0,
+                  fmt::format("gpu cost: cache folder {}: {}; compiling without it",
+                              opt.cache_dir, ec.message())});
+    }
     auto impl = std::make_unique<Impl>();
     impl->opt = opt;
     impl->mesa = mesa_version(device->driver_info());

@@ -8,6 +8,8 @@ cd "$(dirname "$0")/.."
 V=../shared/validation
 # AREALIGHT=/path/to/a/copy lets a long run go on while build/ is rebuilt.
 al=${AREALIGHT:-build/arealight}
+# RADV statistics are kept per module across runs (arealight --gpu-cache).
+export AREALIGHT_GPU_CACHE=${AREALIGHT_GPU_CACHE:-build/gpu-cache}
 # The public sets with their independent reference values (so no report recomputes the
 # oracle), the exactly degenerate views among them.
 sets=()

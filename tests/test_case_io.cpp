@@ -147,10 +147,10 @@ TEST_CASE("a valid file with every light type parses with its values", "[io]") {
                  R"({"type":"ellipsoid","center":[0,0,4],"axes":[[1,0,0],[0,2,0],[0,0,0.5]]})",
                  R"({"distribution":"beckmann","alpha":0.001})") +
         "," +
-        // Unknown fields anywhere are ignored; n and v are kept as written.
-        R"({"id": "tri", "note": "x", "p": [1, 2, 3], "n": [0, 0, 2], "v": [0.5, -1, 4],
-            "light": {"type": "polygon", "vertices": [[0,0,5],[1,0,5],[0,1,5]], "colour": 1},
-            "material": {"distribution": "ggx", "alpha": 1, "exponent": 7}})";
+        // "comment" and "x-..." fields are ignored at every level; n and v are kept as written.
+        R"({"id": "tri", "comment": "x", "p": [1, 2, 3], "n": [0, 0, 2], "v": [0.5, -1, 4],
+            "light": {"type": "polygon", "vertices": [[0,0,5],[1,0,5],[0,1,5]], "x-colour": 1},
+            "material": {"distribution": "ggx", "alpha": 1, "comment": {"why": [7]}}})";
     const Parsed p = parse(file_with(cases));
     INFO("messages:\n" << p.all());
     REQUIRE(p.set);
@@ -214,6 +214,7 @@ TEST_CASE("polygons pass in either orientation, far from the origin, within tole
     std::vector<std::string> msgs;
     ValidationTolerances tight;
     tight.coplanar_rel = 1e-10;
+    tight.fp32_ulps = 0.0;
     CHECK_FALSE(parse_cases(
         file_with(one_case("flat", polygon("[[-1,-1,2],[1,-1,2],[1,1,2.00000001],[-1,1,2]]"))),
         "cases.json", [&](const Diagnostic& d) { msgs.push_back(d.message); }, tight));
@@ -362,13 +363,61 @@ TEST_CASE("malformed: non-convex polygon (dart)", "[io]") {
                  "dart", "light.vertices[2]", "not convex");
 }
 
-TEST_CASE("malformed: self-intersecting polygon (pentagram)", "[io]") {
+TEST_CASE("malformed: self-intersecting polygon (pentagram, bowties)", "[io]") {
     // Every turn has the same sign, yet the outline goes around twice.
     expect_error(file_with(one_case("star", polygon("[[1,0,2],[-0.809017,0.587785,2],"
                                                     "[0.309017,-0.951057,2],"
                                                     "[0.309017,0.951057,2],"
                                                     "[-0.809017,-0.587785,2]]"))),
-                 "star", "light.vertices", "winds 2 times");
+                 "star", "light.vertices", "edges 0-1 and 2-3 cross: the polygon is self-intersecting");
+    // A symmetric bowtie has no net (Newell) area; an uneven one has some: both cross.
+    expect_error(file_with(one_case("bow", polygon("[[0,0,2],[1,1,2],[1,0,2],[0,1,2]]"))), "bow",
+                 "light.vertices", "edges 0-1 and 2-3 cross: the polygon is self-intersecting");
+    expect_error(file_with(one_case("bow2", polygon("[[0,0,2],[2,1,2],[2,0,2],[0,1.5,2]]"))),
+                 "bow2", "light.vertices", "self-intersecting");
+}
+
+TEST_CASE("malformed: an unknown field anywhere is an error naming the nearest known one",
+          "[io]") {
+    const std::string c = one_case("u");
+    expect_error(file_with(replace(c, R"("p": [0, 0, 0],)", R"("p": [0, 0, 0], "pos": 1,)")), "u",
+                 "pos", "unknown field (did you mean 'p'?)");
+    expect_error(file_with(one_case("ts", R"({"type": "polygon", "two_side": true,
+                                             "vertices": [[-1,-1,2],[1,-1,2],[1,1,2],[-1,1,2]]})")),
+                 "ts", "light.two_side", "unknown field (did you mean 'light.two_sided'?)");
+    // A field of another light type is unknown to this one.
+    expect_error(file_with(one_case("sr", R"({"type":"sphere","center":[0,0,2],"radius":1,
+                                             "two_sided":true})")),
+                 "sr", "light.two_sided", "unknown field");
+    expect_error(file_with(one_case("al", kQuad, R"({"distribution":"ggx","alpha":0.2,"alpah":1})")),
+                 "al", "material.alpah", "did you mean 'material.alpha'?");
+    // Phong has no Fresnel factor (CONTRACT 2): f0 is no field of a Phong material.
+    expect_error(file_with(one_case("pf", kQuad, R"({"distribution":"phong","exponent":10,"f0":0.5})")),
+                 "pf", "material.f0", "unknown field");
+    expect_file_error(
+        R"({"format": "arealight-cases/1", "cases": [], "case": []})", "field 'case': ",
+        "unknown field (did you mean 'cases'?)");
+}
+
+TEST_CASE("fp32-rounded lights pass the planarity and orthogonality checks (CONTRACT 3)",
+          "[io]") {
+    // A small quad 4 units from the origin whose vertices were rounded to fp32: z differs
+    // from 4 by one fp32 ulp there (4.77e-7), far above 1e-6 of its diameter 0.014
+    // (1.4e-8) yet within 8 ulp, so it is accepted...
+    const Parsed ok = parse(file_with(one_case(
+        "r32", polygon("[[0.01,0.01,4],[0.02,0.01,4],[0.02,0.02,4.000000476837158],"
+                       "[0.01,0.02,4]]"))));
+    INFO(ok.all());
+    CHECK(ok.set);
+    // ...while a vertex 100 ulp off (each vertex then ~25 ulp off the best plane) is not.
+    expect_error(file_with(one_case("r32far", polygon("[[0.01,0.01,4],[0.02,0.01,4],"
+                                                      "[0.02,0.02,4.0000476837],[0.01,0.02,4]]"))),
+                 "r32far", "light.vertices[0]", "not coplanar");
+    // Disk axes 1 ulp of fp32 away from orthogonal pass.
+    const Parsed disk = parse(file_with(one_case(
+        "d32", R"({"type":"disk","center":[0,0,2],"u":[0.6,0.8,0],"v":[-0.800000011920929,0.6,0]})")));
+    INFO(disk.all());
+    CHECK(disk.set);
 }
 
 TEST_CASE("malformed: repeated consecutive vertex", "[io]") {
@@ -444,8 +493,7 @@ TEST_CASE("f0 of a microfacet material is read in [0, 1]; absent means F = 1", "
         one_case("beckmann-004", kQuad, R"({"distribution":"beckmann","alpha":0.1,"f0":0.04})") +
         "," + one_case("blinn-1", kQuad, R"({"distribution":"blinn","exponent":50,"f0":1})") + "," +
         one_case("none") + "," +
-        // Phong has no Fresnel factor: f0 is an unknown field there, ignored even out of range.
-        one_case("phong", kQuad, R"({"distribution":"phong","exponent":10,"f0":1.5})");
+        one_case("phong", kQuad, R"({"distribution":"phong","exponent":10})");
     const Parsed p = parse(file_with(cases));
     INFO("messages:\n" << p.all());
     REQUIRE(p.set);

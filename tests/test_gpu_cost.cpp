@@ -119,6 +119,49 @@ TEST_CASE("gpu cost: a constant loop costs more than a trivial kernel, unrolled 
     CHECK(loop->ratio_to_point == 0);  // a module has no baseline
 }
 
+TEST_CASE("gpu cost: the cache folder keeps each module's statistics for the next meter",
+          "[gpu_cost]") {
+    if (!meter_or_skip()) return;
+    test::ScratchFolder scratch("gpu_cache");
+    GpuCostOptions opt;
+    opt.cache_dir = scratch / "cache";
+    const auto words = compiled(kTrivial, "trivial.comp");
+    Collected diag;
+    auto first = GpuCostMeter::create(opt, diag.consumer());
+    REQUIRE(first);
+    const auto measured = first->measure(words, diag.consumer());
+    INFO(diag.text);
+    REQUIRE(measured);
+    // One file per module compiled: a loop-free module is its own unrolled module.
+    std::vector<std::filesystem::path> files;
+    for (const auto& e : std::filesystem::directory_iterator(opt.cache_dir))
+        files.push_back(e.path());
+    REQUIRE(files.size() == 1);
+    CHECK(files[0].filename().string().rfind("navi21-" + measured->mesa + "-", 0) == 0);
+    // A second meter reads the file instead of compiling: a figure planted in it comes
+    // back as the module's cost.
+    std::ifstream in(files[0]);
+    auto doc = nlohmann::json::parse(in);
+    const double planted = 123457;
+    doc["values"]["Inverse Throughput"] = planted;
+    std::ofstream(files[0]) << doc.dump();
+    auto second = GpuCostMeter::create(opt, diag.consumer());
+    REQUIRE(second);
+    const auto cached = second->measure(words, diag.consumer());
+    REQUIRE(cached);
+    CHECK(cached->cost == static_cast<uint64_t>(planted));
+    CHECK(cached->instructions == measured->instructions);
+    // An unreadable entry is a miss: compiled again, the true figure, and rewritten.
+    std::ofstream(files[0]) << "not json";
+    auto third = GpuCostMeter::create(opt, diag.consumer());
+    REQUIRE(third);
+    const auto again = third->measure(words, diag.consumer());
+    REQUIRE(again);
+    CHECK(again->cost == measured->cost);
+    std::ifstream reread(files[0]);
+    CHECK(nlohmann::json::parse(reread, nullptr, false).is_object());
+}
+
 TEST_CASE("gpu cost: a variant is measured on generate's kernel, against its point light",
           "[gpu_cost]") {
     auto meter = meter_or_skip();

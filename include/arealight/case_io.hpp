@@ -10,10 +10,15 @@
 
 namespace arealight {
 
-// Tolerances of the geometric checks, relative to the light's own size.
+// Tolerances of the geometric checks (CONTRACT.md 3): relative to the light's own size,
+// plus what rounding its coordinates to fp32 moves them, since a renderer's data is fp32.
 struct ValidationTolerances {
     double coplanar_rel = 1e-6;   // |distance to plane| / polygon diameter
     double collinear_rel = 1e-9;  // |sin| of the turn angle at a vertex
+    double orthogonal_rel = 1e-6; // |u.v| / (|u| |v|) of disk and ellipsoid axes
+    // fp32 ulps at the largest coordinate magnitude added to the plane distance (and,
+    // scaled by the other vector's length, to |u.v|).
+    double fp32_ulps = 8.0;
 };
 
 // Parses and validates a case file. On failure returns nullopt and reports

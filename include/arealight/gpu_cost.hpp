@@ -63,6 +63,10 @@ struct GpuCostOptions {
     // cost as written, with a warning; a module as written stopped so has no GpuCost.
     double compile_seconds = 60;
     uint64_t compile_memory_bytes = uint64_t{6} << 30;
+    // A folder of RADV's statistics by module (family, Mesa version and a hash of the
+    // words name each file): a module compiled once, in any run, is not compiled again.
+    // Empty: no cache. `--gpu-cache` / AREALIGHT_GPU_CACHE on the command line.
+    std::string cache_dir;
 };
 
 // The chip families RADV_FORCE_FAMILY accepts in Mesa 22.3 (lower case). A name it
