@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include <cctype>
+#include <cstdint>
 #include <set>
 
 #include "arealight/generator.hpp"
@@ -37,10 +38,12 @@ const std::vector<LightEntry>& light_entries() {
          "vertices, count, two_sided", {"library_polygon.glsl"}, "vertices, count, two_sided",
          "convex planar polygon, counter-clockwise seen from its emitting side, count in [3, "
          "AL_MAX_VERTS] (more are cut to the first AL_MAX_VERTS)"},
-        {LightType::Disk, "vec3 center, vec3 u, vec3 v, bool two_sided", "center, u, v, two_sided",
+        // axis_u, axis_v (CONTRACT 5): case files' u and v, named apart from the view s.v.
+        {LightType::Disk, "vec3 center, vec3 axis_u, vec3 axis_v, bool two_sided",
+         "center, axis_u, axis_v, two_sided",
          {"ellipse_record.glsl", "spin_polygon.glsl", "library_disk.glsl"}, "vertices[0], vertices[1], vertices[2], two_sided",
-         "disk or ellipse with orthogonal semi-axes u, v, emitting towards u x v (both sides if "
-         "two_sided)"},
+         "disk or ellipse with orthogonal semi-axes axis_u, axis_v, emitting towards axis_u x "
+         "axis_v (both sides if two_sided)"},
         {LightType::Sphere, "vec3 center, float radius", "center, radius",
          {"ellipse_record.glsl", "spin_polygon.glsl", "library_sphere.glsl"}, "vertices[0], vertices[1].x",
          "sphere of radius > 0, p outside it"},
@@ -55,6 +58,16 @@ const LightEntry* find_light(LightType t) {
     for (const auto& e : light_entries())
         if (e.light == t) return &e;
     return nullptr;
+}
+
+// FNV-1a 64 of a text: names a library's include guard after its contents.
+uint64_t text_hash(const std::string& text) {
+    uint64_t h = 1469598103934665603ull;
+    for (unsigned char c : text) {
+        h ^= c;
+        h *= 1099511628211ull;
+    }
+    return h;
 }
 
 int count_lines(const std::string& s) {
@@ -372,6 +385,14 @@ void emit_library(std::string& out, const std::vector<Variant>& variants, Langua
         "// the contract's are prefixed al_<light>_<dist>_ (AL_..., Al...) so that they\n"
         "// cannot collide with a renderer's or another arealight library's.\n",
         names);
+    // A guard named from the text it guards: including one file twice is harmless, two
+    // different libraries still combine. The name is filled in at the end, in place
+    // (same length, so no #line number moves).
+    const std::string placeholder(16, '0');
+    const std::size_t guard_at = out.size();
+    out += fmt::format("#ifndef AREALIGHT_LIBRARY_{0}\n#define AREALIGHT_LIBRARY_{0} 1\n",
+                       placeholder);
+    const std::size_t body_at = out.size();
     if (lang == Language::Glsl) {
         out += "#extension GL_GOOGLE_cpp_style_line_directive : enable\n";
         out += "#extension GL_EXT_control_flow_attributes : enable\n";
@@ -395,7 +416,15 @@ void emit_library(std::string& out, const std::vector<Variant>& variants, Langua
         for (const auto& path : chunk_templates(v)) emit_template(out, path, lookup, suffix);
         emit_public_function(out, v, opt);
         out.replace(start, std::string::npos, library_rename(out.substr(start), v));
+        // What a renderer can #ifdef on (not renamed: outside the variant's namespace).
+        out += fmt::format("#define AREALIGHT_HAS_{}_{} 1\n", upper(to_string(v.light)),
+                           upper(to_string(v.dist)));
     }
+    const std::string hash = fmt::format("{:016X}", text_hash(out.substr(body_at)));
+    for (std::size_t at = out.find(placeholder, guard_at); at < body_at;
+         at = out.find(placeholder, at + hash.size()))
+        out.replace(at, hash.size(), hash);
+    out += fmt::format("#endif  // AREALIGHT_LIBRARY_{}\n", hash);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include <catch2/catch.hpp>
+#include <cctype>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -223,6 +224,34 @@ float renderer_uses_its_names() {
 }
 )");
     check_contract_user(dir, run);
+}
+
+TEST_CASE("a library included twice is harmless, and its feature macros say what it holds",
+          "[vulkan][library]") {
+    const UserRun run = prepare();
+    ScratchFolder dir("contract_user_twice");
+    dir.write("all.glsl", library(run.variants));
+    // The second include is empty (the guard named from the contents); a shader can
+    // test for each function, and a (light, dist) the library lacks has no macro.
+    std::string user = "#include \"all.glsl\"\n#include \"all.glsl\"\n";
+    for (const auto& v : run.variants) {
+        std::string macro = std::string("AREALIGHT_HAS_POLYGON_") + to_string(v.dist);
+        for (auto& ch : macro) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+        user += "#ifndef " + macro + "\n#error " + macro + " missing\n#endif\n";
+    }
+    user += "#ifdef AREALIGHT_HAS_SPHERE_GGX\n#error a sphere function nobody asked for\n#endif\n";
+    dir.write("contract_user_library.glsl", user);
+    check_contract_user(dir, run);
+    const std::string text = library(run.variants);
+    CHECK(text.find("#ifndef AREALIGHT_LIBRARY_") != std::string::npos);
+    // Named from the contents: another library's guard differs.
+    const std::string other = library({run.variants[0]});
+    auto guard = [](const std::string& t) {
+        const auto at = t.find("#ifndef AREALIGHT_LIBRARY_");
+        return t.substr(at, t.find('\n', at) - at);
+    };
+    INFO(guard(text) << " / " << guard(other));
+    CHECK(guard(text) != guard(other));
 }
 
 TEST_CASE("a library holds one variant per light type and distribution", "[library]") {
