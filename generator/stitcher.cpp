@@ -254,6 +254,10 @@ void emit_public_function(std::string& out, const Variant& v, const LibraryOptio
     } else {
         out += "// Error and cost: not in arealight's measured data (see arealight report).\n";
     }
+    // The peak-function methods of Lecocq et al. are patented (README.md, Patent notice).
+    if (is_peak_method(v.method))
+        out += "// Patent: the peak-function method of Lecocq et al. is covered by US 10,607,404; "
+               "see README.md.\n";
     out += fmt::format("ArealightShading {}(ArealightSurface s, {}) {{\n",
                        library_function_name(v), light->params);
     out += fmt::format("    vec4 q = al_{}_evaluate(s, {});\n", to_string(v.light), light->args);

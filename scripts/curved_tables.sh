@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Measures every curved-light family (disk, sphere, ellipsoid) beside the polygon
 # family of the same distribution and method, per public set, on lavapipe, and prints
-# README.md's "Curved lights" tables: specular relL2 (Phong: specular / moment)
+# the tables of docs/curved-lights.md (formerly README.md's "Curved lights" section): specular relL2 (Phong: specular / moment)
 # at the floor each method is judged by (exact 1e-3: p95 / max of the relative
 # error instead), and the count of missing or bad values over all four sets.
 # Usage: scripts/curved_tables.sh [BUILD_DIR] [METHODS...]   (default build; all methods)
@@ -41,7 +41,7 @@ EOF
 for m in $METHODS; do
   floor=1e-2
   [ "$m" = exact ] && floor=1e-3
-  echo "### method=$m (floor $floor)"
+  echo "### docs/curved-lights.md: method=$m (floor $floor)"
   echo "| dist | set | polygon | disk | sphere | ellipsoid |"
   echo "|---|---|---|---|---|---|"
   for d in phong blinn beckmann ggx; do

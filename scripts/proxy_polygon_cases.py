@@ -16,7 +16,7 @@ inside a sphere or ellipsoid) are left out.
 What it is for: the oracle on OUT against the oracle on IN is the proxy's own
 error; a polygon method on OUT (K = 8) against the oracle on OUT is that method's
 error on the same lights seen from the same points, the like-for-like yardstick
-for the spinning polygon (README "Curved lights"). This is a second, independent
+for the spinning polygon (docs/curved-lights.md). This is a second, independent
 construction of the proxy (double precision, written from the template's header,
 not from its code).
 """

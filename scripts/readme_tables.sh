@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
-# Reruns every `arealight eval` + `shared/tools/score` measurement that README.md's
-# accuracy tables and their inline numbers quote (not the report- or sweep-derived
-# tables, which come from docs/report*/ and docs/sweep*/), then prints each table's
-# cells in the README's layout. Outputs and score JSON go to out/remeasure/.
+# Reruns every `arealight eval` + `shared/tools/score` measurement that the accuracy tables
+# of docs/methods.md (Phong exact and peak methods), docs/microfacet.md (microfacet exact,
+# O(1) nodes, the paper's method) and docs/ltc.md (LTC and its keys) quote, with their inline
+# numbers (not the report- or sweep-derived tables of docs/reports.md, which come from
+# docs/report*/ and docs/sweep*/), then prints each table's cells in that page's layout,
+# each headed by the page it goes to. Outputs and score JSON go to out/remeasure/.
+# (The name is historical: these tables lived in README.md.)
 # Usage: scripts/readme_tables.sh [BUILD_DIR]   (default build; lavapipe + CPU mirror)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -14,7 +17,7 @@ mkdir -p "$O"
 : >"$O/eval.log"
 PUB="typical horizon glossy stress"
 
-# The two seeded sets the README names; their oracle is `arealight reference`.
+# The two seeded sets the pages name; their oracle is `arealight reference`.
 python3 scripts/gen_phong_cases.py 600 11 "$O/rand.cases.json"
 python3 scripts/gen_microfacet_cases.py 600 7 "$O/hard.cases.json"
 for s in rand hard; do
@@ -89,7 +92,7 @@ def sc(tag, s, b="vulkan"):
     return json.load(open(f"{O}/{tag}.{s}.{b}.score.json"))["quantities"]
 def ag(tag, s):
     return json.load(open(f"{O}/{tag}.{s}.agree.json"))["quantities"]
-def e(x):  # 2 significant digits, README style: 6.6e-8
+def e(x):  # 2 significant digits, as the pages write them: 6.6e-8
     m, x_ = f"{x:.1e}".split("e")
     return f"{m}e{int(x_)}"
 def mixed(x):  # decimals from 0.1 up, as in the microfacet tables
@@ -100,7 +103,7 @@ PUB = ["typical", "horizon", "glossy", "stress"]
 def bad(tag, sets, backends=("vulkan",)):
     return sum(q["missing"] + q["bad"] for s in sets for b in backends for q in sc(tag, s, b).values())
 
-print("== phong exact, floor 1e-3, p95 / max (fp32: worse of lavapipe and mirror)")
+print("== docs/methods.md: phong exact, floor 1e-3, p95 / max (fp32: worse of lavapipe and mirror)")
 for p in ["fp64", "fp32"]:
     for s in PUB:
         cells = []
@@ -111,7 +114,7 @@ for p in ["fp64", "fp32"]:
     print(f"  {p}: mirror vs lavapipe max rel", e(max(q["max"] for s in PUB for q in ag(f"phong-exact-{p}", s).values())),
           " missing+bad", bad(f"phong-exact-{p}", PUB, ("vulkan", "cpu")))
 
-print("== phong peak, floor 1e-2, relL2 / p95")
+print("== docs/methods.md: phong peak, floor 1e-2, relL2 / p95")
 rows = [("ellipsoid", "tuned", "twoaxis"), ("pearson", "tuned", "twoaxis"), ("lorentz", "tuned", "twoaxis"),
         ("ellipsoid", "paper", "twoaxis"), ("pearson", "paper", "twoaxis"), ("lorentz", "paper", "twoaxis"),
         ("ellipsoid", "tuned", "sg")]
@@ -130,7 +133,7 @@ print(f"  {len(tags)} peak variants, missing+bad over all sets and both backends
       sum(bad(t, PUB + ["rand"], ("vulkan", "cpu")) for t in tags))
 print("  mirror vs lavapipe max rel:", e(max(q["max"] for t in tags for s in PUB + ["rand"] for q in ag(t, s).values())))
 
-print("== microfacet exact default, floor 1e-3, p95 / max")
+print("== docs/microfacet.md: microfacet exact default, floor 1e-3, p95 / max")
 for d in ["blinn", "beckmann", "ggx"]:
     for s in PUB:
         v = sc(f"{d}-exact-fp64", s)
@@ -150,12 +153,12 @@ for b in ["vulkan", "cpu"]:
             v = sc(f"{d}-exact-fp32", s, b)
             print(f"    {d} {s} (n={v['specular']['n']}) p95 / max:", "  ".join(f"{q} {e(v[q]['p95'])} / {e(v[q]['max'])}" for q in ["diffuse", "specular", "ndf"]))
 
-print("== O(1) nodes, floor 1e-2, specular relL2 / p95")
+print("== docs/microfacet.md: O(1) nodes, floor 1e-2, specular relL2 / p95")
 for d, n in [("blinn", 2), ("blinn", 3), ("beckmann", 2), ("beckmann", 3), ("ggx", 2), ("ggx", 3), ("ggx", 16)]:
     cells = [f"{mixed(sc(f'{d}-exact-n{n}', s)['specular']['relL2'])} / {mixed(sc(f'{d}-exact-n{n}', s)['specular']['p95'])}" for s in PUB + ["hard"]]
     print(f"| {d}, nodes={n} | " + " | ".join(cells) + " |")
 
-print("== paper's method, floor 1e-2, specular relL2 / p95 (ndf relL2)")
+print("== docs/microfacet.md: paper's method, floor 1e-2, specular relL2 / p95 (ndf relL2)")
 for d in ["blinn", "beckmann", "ggx"]:
     for m in ["lorentz", "pearson", "ellipsoid"]:
         cells = []
@@ -174,7 +177,7 @@ print("  hard set specular relL2, exact nodes=3 / pearson:",
       " / ".join(mixed(sc(f"{d}-exact-n3", "hard")["specular"]["relL2"]) for d in ["blinn", "beckmann", "ggx"]), "|",
       " / ".join(mixed(sc(f"{d}-pearson", "hard")["specular"]["relL2"]) for d in ["blinn", "beckmann", "ggx"]))
 
-print("== LTC, floor 1e-2, specular relL2")
+print("== docs/ltc.md: LTC, floor 1e-2, specular relL2")
 for d in ["ggx", "beckmann", "blinn", "phong"]:
     print(f"| {d} | " + " | ".join(dec(sc(f"{d}-ltc", s)["specular"]["relL2"]) for s in PUB) + " |")
 print("  diffuse relL2 max:", e(max(sc(f"{d}-ltc", s)["diffuse"]["relL2"] for d in ["ggx", "beckmann", "blinn", "phong"] for s in PUB)))

@@ -41,3 +41,5 @@ $al quality --report docs/report-phong/report.json --report docs/report-blinn/re
   --report docs/report-disk/report.json \
   --report docs/report-sphere/report.json --report docs/report-ellipsoid/report.json \
   --out data/quality/measured.json
+# README.md's "Choosing a variant" table from the new data.
+python3 scripts/choosing_table.py

@@ -287,3 +287,40 @@ TEST_CASE("scene library: GGX and Phong on mixed polygons give one function per 
     check_same_spirv(one_lib, one_lib.variants[0],
                      "dist=phong,method=exact,light=polygon,sided=one,verts=4");
 }
+
+TEST_CASE("library: each patented peak-function method's function comment names the patent",
+          "[scene][library]") {
+    // The comment above a lorentz, pearson or ellipsoid function names US 10,607,404 (README
+    // Patent notice); no other method's does.
+    auto count = [](const std::string& text) {
+        std::size_t n = 0;
+        for (auto at = text.find("US 10,607,404"); at != std::string::npos;
+             at = text.find("US 10,607,404", at + 1))
+            ++n;
+        return n;
+    };
+    auto library = [](std::vector<std::string> names) {
+        std::vector<Variant> variants;
+        for (const auto& name : names) {
+            auto v = parse_variant(name, {});
+            REQUIRE(v);
+            variants.push_back(*v);
+        }
+        Collected c;
+        const auto text = generate_library(variants, Language::Glsl, LibraryOptions{}, c.consumer());
+        INFO(c.all());
+        REQUIRE(text);
+        return *text;
+    };
+    const std::string peak = library({"dist=phong,method=pearson,light=polygon",
+                                      "dist=ggx,method=lorentz,light=disk",
+                                      "dist=beckmann,method=ellipsoid,light=sphere"});
+    CHECK(count(peak) == 3);
+    const std::regex comment_then_function(
+        "// Patent: the peak-function method of Lecocq et al\\. is covered by US 10,607,404; see "
+        "README\\.md\\.\nArealightShading arealight_(polygon_phong|disk_ggx|sphere_beckmann)\\(");
+    CHECK(std::distance(std::sregex_iterator(peak.begin(), peak.end(), comment_then_function),
+                        std::sregex_iterator()) == 3);
+    CHECK(count(library({"dist=ggx,method=ltc,light=polygon", "dist=phong,method=exact,light=disk",
+                         "dist=blinn,method=mrp,light=sphere", "dist=beckmann,method=point,light=polygon"})) == 0);
+}
