@@ -43,7 +43,7 @@ TABLE = "data/ltc/ltc_ggx.txt"
 OUT = "templates/ltc_ggx_fit.glsl"
 SIZE = 64
 JMAX = 62
-NU, NW = 7, 9
+NU, NW = 9, 12
 NAMES = ["q", "lsx", "lsy", "d", "t", "b"]
 DOC = {
     "q": "(phi - theta_v) / alpha: the lobe axis' shift from the mirror direction, in widths",

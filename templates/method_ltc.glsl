@@ -19,6 +19,11 @@
 // edge=acos takes theta / sin(theta) exactly; edge=poly by a quadratic in cos(theta)
 // (scripts/fit_edge_poly.py). precision=fp16 computes the edge integrals, the
 // clipping and the proxy in half precision (hreal), after the transform in fp32.
+// table=fit (GGX) evaluates the coefficients in closed form (templates/ltc_ggx_fit.glsl,
+// al_ltc_fit_lookup) and the proxy by Snyder's formula: no texture, no sampler.
+// GPU cost (navi21, `arealight gpu-cost`, the validation kernel): GGX polygon default
+// 986 (1.98x its point light's 498; 2705 instructions, 96 VGPRs); table=fit 1910
+// (3.84x; 3576 instructions, 96 VGPRs).
 
 // Grid of the tables (include/arealight/ltc_table.hpp, ltc_rho_range in
 // fit/ltc_table.cpp): 64 x 64 cells; rho = sqrt(alpha) spans the contract's
@@ -220,12 +225,17 @@ real al_ltc_sphere_clipped(real co, real ss2) {
     if (co <= -ss) return AL_R(0.0);  // entirely below
     real so = sqrt(max((AL_R(1.0) - co) * (AL_R(1.0) + co), AL_R(0.0)));
     real cs = sqrt(max(AL_R(1.0) - ss2, AL_R(0.0)));
-    real sg = so > AL_R(0.0) ? min(cs / so, AL_R(1.0)) : AL_R(1.0);
-    real gamma = asin(sg);
-    real cg = sqrt(max(AL_R(1.0) - sg * sg, AL_R(0.0)));
+    // sin gamma = cs / so, cos gamma = sqrt(sin^2 sigma - cos^2 omega) / so: the
+    // difference as a product, and the angles by atan2 (al_ltc_angle), because asin and
+    // 1 - sg^2 lose fp32's digits as gamma nears pi / 2 (a sphere barely straddling).
+    real cg_so = sqrt(max((ss - co) * (ss + co), AL_R(0.0)));
+    real inv_so = so > AL_R(0.0) ? AL_R(1.0) / so : AL_R(0.0);
+    real sg = so > AL_R(0.0) ? min(cs * inv_so, AL_R(1.0)) : AL_R(1.0);
+    real cg = cg_so * inv_so;
+    real gamma = al_ltc_angle(cs, cg_so);
     real g = -AL_R(2.0) * so * cs * cg + AL_HALF_PI - gamma + sg * cg;
-    real h = co * (cg * sqrt(max(ss2 - cg * cg, AL_R(0.0))) +
-                   ss2 * asin(clamp(cg / ss, AL_R(-1.0), AL_R(1.0))));
+    real sr = sqrt(max(ss2 - cg * cg, AL_R(0.0)));  // sqrt(sin^2 sigma - cos^2 gamma)
+    real h = co * (cg * sr + ss2 * al_ltc_angle(cg, sr));
     real i = co > AL_R(0.0) ? (AL_PI * co * ss2 + g - h) / AL_PI : (g + h) / AL_PI;
     return clamp(i, AL_R(0.0), AL_R(1.0));
 }

@@ -39,8 +39,8 @@ struct Bound {
 // q = (phi - theta_v) / alpha in lobe widths, log sx alpha, log sy alpha cos, d (cells
 // i >= 4: rows i < 4 lie on the other branch of a near-degenerate optimum), A + B, B.
 const Bound kBounds[] = {
-    {"q", 0.085, 0.008, 0.12},  {"lsx", 0.06, 0.005, 0.06}, {"lsy", 0.11, 0.014, 0.30},
-    {"d", 0.23, 0.018, 0.15},   {"t", 0.014, 0.0012, 0.05}, {"b", 0.008, 0.0007, 0.025},
+    {"q", 0.045, 0.006, 0.12},   {"lsx", 0.055, 0.004, 0.06}, {"lsy", 0.04, 0.0055, 0.30},
+    {"d", 0.22, 0.016, 0.15},    {"t", 0.0095, 0.0008, 0.05}, {"b", 0.004, 0.00025, 0.025},
 };
 
 }  // namespace
