@@ -95,11 +95,9 @@ int main(int argc, char** argv) {
             probe_entries +=
                 fmt::format("        {{\"{}\", &al_mirror_{}::edge_probe}},\n", name, i);
         }
-        // The family's samplers take the run's textures in binding order (a missing one
+        // The variant's samplers take the run's textures in binding order (a missing one
         // stays unbound: its texture() reads NaN).
-        const arealight::VariantFamily* family = arealight::find_family(variants[i]);
-        const std::vector<std::string> samplers =
-            family ? family->samplers : std::vector<std::string>{};
+        const std::vector<std::string> samplers = arealight::variant_samplers(variants[i]);
         std::string bind;
         for (std::size_t k = 0; k < samplers.size(); ++k) {
             bind += fmt::format("    {0}.tex = texture_count > {1} ? textures[{1}] : nullptr;\n",

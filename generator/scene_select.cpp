@@ -84,8 +84,7 @@ bool allowed(const Variant& v, const SceneQuality& q, std::string* why = nullptr
     };
     if (effective_precision(v) == Precision::Fp64 && !q.fp64.value_or(false))
         return refuse("it computes in fp64 (quality.precision is fp32 unless the scene says fp64)");
-    const VariantFamily* f = find_family(v);
-    if (f && !f->samplers.empty() && !q.tables.value_or(true))
+    if (!variant_samplers(v).empty() && !q.tables.value_or(true))
         return refuse("it samples tables (quality.tables is false)");
     if (is_peak_method(v.method) && !q.patented.value_or(true))
         return refuse("it is a patented peak-function method (quality.patented is false)");

@@ -189,22 +189,21 @@ void emit_tables(std::string& out, const Variant& v, Language lang, const std::s
     if (family_uses(v, "radial")) rule(v.radial, "AL_GR_X", "AL_GR_W");
 }
 
-// The tables the family samples (VariantFamily::samplers): in GLSL sampled images at
+// The tables the variant samples (variant_samplers): in GLSL sampled images at
 // set AREALIGHT_SET and binding AREALIGHT_<TAG>_<NAME>_BINDING, which defaults to
 // AREALIGHT_BINDING plus the sampler's index in the library (`first`); in C++ the
 // mirror's samplers (bound by its run(), generator/mirror_tool.cpp).
 void emit_samplers(std::string& out, const Variant& v, Language lang, int first) {
-    const VariantFamily* f = find_family(v);
-    if (!f) return;
-    for (std::size_t i = 0; i < f->samplers.size(); ++i) {
+    const std::vector<std::string> samplers = variant_samplers(v);
+    for (std::size_t i = 0; i < samplers.size(); ++i) {
         if (lang == Language::Glsl) {
-            const std::string macro = sampler_binding_macro(v, f->samplers[i]);
+            const std::string macro = sampler_binding_macro(v, samplers[i]);
             out += fmt::format("#ifndef {0}\n#define {0} (AREALIGHT_BINDING + {1})\n#endif\n",
                                macro, first + static_cast<int>(i));
             out += fmt::format("layout(set = AREALIGHT_SET, binding = {}) uniform sampler2D {};\n",
-                               macro, f->samplers[i]);
+                               macro, samplers[i]);
         } else {
-            out += fmt::format("static thread_local AlSampler2D {};\n", f->samplers[i]);
+            out += fmt::format("static thread_local AlSampler2D {};\n", samplers[i]);
         }
     }
 }
@@ -225,9 +224,7 @@ void emit_template(std::string& out, const std::string& path, const TemplateLook
 // (generator/variant.cpp), the light's library entry.
 std::vector<std::string> chunk_templates(const Variant& v) {
     std::vector<std::string> files = {"templates/common.glsl"};
-    if (const VariantFamily* family = find_family(v)) {
-        for (const auto& name : family->templates) files.push_back("templates/" + name);
-    }
+    for (const auto& name : variant_family_templates(v)) files.push_back("templates/" + name);
     if (const LightEntry* light = find_light(v.light))
         for (const auto& t : light->library_templates) files.push_back("templates/" + t);
     return files;
@@ -416,7 +413,7 @@ void emit_library(std::string& out, const std::vector<Variant>& variants, Langua
         const std::string suffix = literal_suffix(v, lang);
         emit_tables(out, v, lang, suffix);
         emit_samplers(out, v, lang, sampler);
-        if (const VariantFamily* f = find_family(v)) sampler += static_cast<int>(f->samplers.size());
+        sampler += static_cast<int>(variant_samplers(v).size());
         for (const auto& path : chunk_templates(v)) emit_template(out, path, lookup, suffix);
         emit_public_function(out, v, opt);
         out.replace(start, std::string::npos, library_rename(out.substr(start), v));

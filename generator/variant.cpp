@@ -32,6 +32,7 @@ const Split kSplits[] = {Split::None, Split::Single, Split::Halved};
 const Factor kFactors[] = {Factor::Closest, Factor::Blend};
 const Horizon kHorizons[] = {Horizon::Clip, Horizon::Proxy};
 const Edge kEdges[] = {Edge::Acos, Edge::Poly};
+const Table kTables[] = {Table::Texture, Table::Fit};
 const Orient kOrients[] = {Orient::Rim, Orient::Paper};
 
 // How a key's effective value becomes a preprocessor switch.
@@ -198,6 +199,9 @@ std::vector<KeyRow> key_rows() {
         key("edge",               &Variant::edge,        kEdges,         one_hot("AL_EDGE_"),
             "method=ltc: edge integral theta / sin(theta) by acos, or poly (a polynomial "
             "in cos(theta), seed 001)"),
+        key("table",              &Variant::table,       kTables,        flag("AL_TABLE_FIT", "fit"),
+            "method=ltc: coefficients from the fitted tables (texture, sampled bilinearly) or "
+            "closed-form polynomials fitted to them (fit: no table, no sampler)"),
         key("proxy",              &Variant::proxy,       {4, 16},         number("AL_MAX_VERTS"),
             "curved lights through a polygon method: sides of the spinning proxy polygon "
             "(seed 000 section 9)"),
@@ -297,8 +301,10 @@ std::vector<VariantFamily> family_rows() {
             {"polygon.glsl", "method_ltc.glsl"}, {"al_ltc_matrix", "al_ltc_amplitude"}, false},
         {D::Beckmann, M::Ltc, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"precision", {"fp32", "fp16"}, "fp32"}, {"horizon"}, {"edge"}},
             {"polygon.glsl", "method_ltc.glsl"}, {"al_ltc_matrix", "al_ltc_amplitude"}, false},
-        {D::Ggx, M::Ltc, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"precision", {"fp32", "fp16"}, "fp32"}, {"horizon"}, {"edge"}},
-            {"polygon.glsl", "method_ltc.glsl"}, {"al_ltc_matrix", "al_ltc_amplitude"}, false},
+        // GGX also without tables: table=fit (templates/ltc_ggx_fit.glsl, scripts/fit_ltc_ggx_closed.py).
+        {D::Ggx, M::Ltc, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"precision", {"fp32", "fp16"}, "fp32"}, {"horizon"}, {"edge"}, {"table"}},
+            {"polygon.glsl", "method_ltc.glsl"}, {"al_ltc_matrix", "al_ltc_amplitude"}, false,
+            {{"table", "fit", {"ltc_ggx_fit.glsl"}, true}}},
     };
     // clang-format on
 }
@@ -371,6 +377,9 @@ std::vector<VariantFamily> curved_rows(const std::vector<VariantFamily>& polygon
             if (row.method == Method::Ltc) {
                 f.templates = {"method_ltc.glsl", "ellipse_cone.glsl", "ltc_ellipse.glsl"};
                 f.keys = {FamilyKey("precision", {"fp32"}, "fp32"), FamilyKey("horizon")};
+                // table=fit replaces the lookup and the proxy's table, which the
+                // ellipse shares (its parts come with the row).
+                if (row.dist == Distribution::Ggx) f.keys.emplace_back("table");
                 out.push_back(std::move(f));
                 continue;
             }
@@ -708,6 +717,9 @@ const char* to_string(Horizon h) {
 const char* to_string(Edge e) {
     return e == Edge::Acos ? "acos" : "poly";
 }
+const char* to_string(Table t) {
+    return t == Table::Texture ? "texture" : "fit";
+}
 const char* to_string(Orient o) {
     return o == Orient::Rim ? "rim" : "paper";
 }
@@ -775,6 +787,38 @@ const std::vector<VariantFamily>& variant_families() {
 const VariantFamily* find_family(const Variant& v) {
     const auto f = family_index(v);
     return f ? &tables().families[*f] : nullptr;
+}
+
+namespace {
+// The parts of the key values the variant has (VariantFamily::parts).
+std::vector<const FamilyKeyParts*> parts_of(const Variant& v, const VariantFamily& f) {
+    std::vector<const FamilyKeyParts*> out;
+    for (const auto& part : f.parts) {
+        const auto k = key_index(part.key);
+        if (!k) continue;
+        const auto value = effective_value(v, *k);
+        if (value && *value == part.value) out.push_back(&part);
+    }
+    return out;
+}
+}  // namespace
+
+std::vector<std::string> variant_family_templates(const Variant& v) {
+    const VariantFamily* f = find_family(v);
+    if (!f) return {};
+    std::vector<std::string> out;
+    for (const auto* part : parts_of(v, *f))
+        out.insert(out.end(), part->templates.begin(), part->templates.end());
+    out.insert(out.end(), f->templates.begin(), f->templates.end());
+    return out;
+}
+
+std::vector<std::string> variant_samplers(const Variant& v) {
+    const VariantFamily* f = find_family(v);
+    if (!f) return {};
+    for (const auto* part : parts_of(v, *f))
+        if (part->without_samplers) return {};
+    return f->samplers;
 }
 
 std::optional<Variant> parse_variant(const std::string& name, const DiagnosticConsumer& diag) {

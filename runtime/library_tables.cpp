@@ -23,12 +23,12 @@ bool write_library_tables(const std::vector<Variant>& variants, const std::strin
     nlohmann::ordered_json tables = nlohmann::ordered_json::array();
     int index = 0;  // the sampler's place in the library: binding AREALIGHT_BINDING + index
     for (const auto& v : variants) {
-        const VariantFamily* family = find_family(v);
-        if (!family || family->samplers.empty()) continue;
+        const std::vector<std::string> samplers = variant_samplers(v);
+        if (samplers.empty()) continue;
         const auto textures = variant_textures(v, diag);
         if (!textures) return false;
-        for (std::size_t k = 0; k < family->samplers.size(); ++k, ++index) {
-            const std::string& sampler = family->samplers[k];
+        for (std::size_t k = 0; k < samplers.size(); ++k, ++index) {
+            const std::string& sampler = samplers[k];
             const Texture2D& t = *(*textures)[k];
             const std::string bare = sampler.rfind("al_", 0) == 0 ? sampler.substr(3) : sampler;
             const std::string file = fmt::format("{}_{}_{}.rgba32f", to_string(v.light),

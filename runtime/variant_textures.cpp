@@ -1,4 +1,4 @@
-// The tables a variant samples (VariantFamily::samplers), by sampler name.
+// The tables a variant samples (variant_samplers), by sampler name.
 #include <stdexcept>
 #include <string>
 
@@ -9,9 +9,7 @@ namespace arealight {
 
 std::vector<const Texture2D*> variant_textures(const Variant& v) {
     std::vector<const Texture2D*> out;
-    const VariantFamily* family = find_family(v);
-    if (!family) return out;
-    for (const auto& name : family->samplers) {
+    for (const auto& name : variant_samplers(v)) {
         // The LTC tables (include/arealight/ltc_table.hpp): matrix, then amplitude.
         if (name == "al_ltc_matrix" || name == "al_ltc_amplitude") {
             const auto& ltc = builtin_ltc_textures(v.dist);

@@ -19,6 +19,11 @@
 // edge=acos takes theta / sin(theta) exactly; edge=poly by a quadratic in cos(theta)
 // (scripts/fit_edge_poly.py). precision=fp16 computes the edge integrals, the
 // clipping and the proxy in half precision (hreal), after the transform in fp32.
+// table=fit (GGX) evaluates the coefficients in closed form (templates/ltc_ggx_fit.glsl,
+// al_ltc_fit_lookup) and the proxy by Snyder's formula: no texture, no sampler.
+// GPU cost (navi21, `arealight gpu-cost`, the validation kernel): GGX polygon default
+// 986 (1.98x its point light's 498; 2705 instructions, 96 VGPRs); table=fit 1910
+// (3.84x; 3576 instructions, 96 VGPRs).
 
 // Grid of the tables (include/arealight/ltc_table.hpp, ltc_rho_range in
 // fit/ltc_table.cpp): 64 x 64 cells; rho = sqrt(alpha) spans the contract's
@@ -172,6 +177,70 @@ void al_lambert_clip_edge(rvec3 a, rvec3 b, real za, real zb, rvec3 m, rvec3 n,
 }
 #endif
 
+#ifdef AL_TABLE_FIT
+// table=fit (GGX): the two textures' (a, b, c, d) and (A, B) in closed form, from the
+// lobe quantities of templates/ltc_ggx_fit.glsl (scripts/fit_ltc_ggx_closed.py: why
+// these, not the coefficients): axis angle phi = theta_v + alpha q, inverse widths
+// sx = e^lsx / alpha, sy = e^lsy / (alpha cos theta_v), then a = N cos phi,
+// b = N sin phi, c = sy k, N = sx k with k = cos phi - d sin phi. Domain: alpha in
+// [0.001, 1], any view (w is clamped to the fitted rows, cos theta_v >= 0.0315; a
+// view below the horizon gets finite values, its specular is 0). Error: the fit's
+// (that file's header) in place of bilinear filtering's.
+void al_ltc_fit_lookup(real param, real nv, real sin_v, AL_INOUT(rvec4) m,
+                       AL_INOUT(rvec4) amp) {
+    real u = clamp((sqrt(param) - AL_LTC_RHO_MIN) / (AL_LTC_RHO_MAX - AL_LTC_RHO_MIN),
+                   AL_R(0.0), AL_R(1.0));
+    real rho = AL_LTC_RHO_MIN + u * (AL_LTC_RHO_MAX - AL_LTC_RHO_MIN);
+    real alpha = rho * rho;
+    // w from the sine, as al_ltc_uv takes it; clamped to the last fitted row, 62/63.
+    real w = nv > AL_R(0.0) ? sin_v * inversesqrt(AL_R(1.0) + nv)
+                            : sqrt(clamp(AL_R(1.0) - nv, AL_R(0.0), AL_R(1.0)));
+    w = min(w, AL_R(0.98412698412698413));
+    real x = AL_R(2.0) * u - AL_R(1.0);
+    real y = w * AL_R(2.0317460317460317) - AL_R(1.0);  // 2 w / (62 / 63) - 1
+    real w2 = w * w, w4 = w2 * w2;
+    real cos_v = AL_R(1.0) - w2;
+    // The view's own angle (not the clamped row's): the lobe follows the view past 62/63.
+    real phi = clamp(al_ltc_angle(sin_v, nv) + alpha * al_ltc_fit_q(x, y), AL_R(0.0),
+                     AL_HALF_PI);
+    real cp = cos(phi), sp = sin(phi);
+    real d = al_ltc_fit_d(x, y);
+    // k = (a - b d) / N > 0 in every cell; the floor only keeps a fit's excursion finite.
+    real k = max(cp - d * sp, AL_R(1e-3));
+    real n = exp(al_ltc_fit_lsx(x, y)) / alpha * k;
+    real cc = exp(al_ltc_fit_lsy(x, y)) / (alpha * cos_v) * k;
+    m = rvec4(n * cp, n * sp, cc, d);
+    real b = al_ltc_fit_b(x, y) + w4 * w4 * w2;  // + Schlick's weight at the mirror, w^10
+    amp = rvec4(al_ltc_fit_t(x, y) - b, b, AL_R(0.0), AL_R(0.0));
+}
+
+// Snyder's closed form of seed 001's horizon proxy (fit/ltc_sphere.cpp, whose values
+// the amplitude texture's w holds divided by sin^2 sigma): the horizon-clipped form
+// factor of a sphere of angular radius sigma at angle omega from n. Domain: co =
+// cos omega in [-1, 1], ss2 = sin^2 sigma in [0, 1]. Error: fp32 rounding (exact form).
+real al_ltc_sphere_clipped(real co, real ss2) {
+    if (!(ss2 > AL_R(0.0))) return AL_R(0.0);
+    real ss = sqrt(ss2);
+    if (co >= ss) return co * ss2;    // entirely above the horizon
+    if (co <= -ss) return AL_R(0.0);  // entirely below
+    real so = sqrt(max((AL_R(1.0) - co) * (AL_R(1.0) + co), AL_R(0.0)));
+    real cs = sqrt(max(AL_R(1.0) - ss2, AL_R(0.0)));
+    // sin gamma = cs / so, cos gamma = sqrt(sin^2 sigma - cos^2 omega) / so: the
+    // difference as a product, and the angles by atan2 (al_ltc_angle), because asin and
+    // 1 - sg^2 lose fp32's digits as gamma nears pi / 2 (a sphere barely straddling).
+    real cg_so = sqrt(max((ss - co) * (ss + co), AL_R(0.0)));
+    real inv_so = so > AL_R(0.0) ? AL_R(1.0) / so : AL_R(0.0);
+    real sg = so > AL_R(0.0) ? min(cs * inv_so, AL_R(1.0)) : AL_R(1.0);
+    real cg = cg_so * inv_so;
+    real gamma = al_ltc_angle(cs, cg_so);
+    real g = -AL_R(2.0) * so * cs * cg + AL_HALF_PI - gamma + sg * cg;
+    real sr = sqrt(max(ss2 - cg * cg, AL_R(0.0)));  // sqrt(sin^2 sigma - cos^2 gamma)
+    real h = co * (cg * sr + ss2 * al_ltc_angle(cg, sr));
+    real i = co > AL_R(0.0) ? (AL_PI * co * ss2 + g - h) / AL_PI : (g + h) / AL_PI;
+    return clamp(i, AL_R(0.0), AL_R(1.0));
+}
+#endif
+
 // The case's LTC: n, its frame (z = n, x toward v; ltc_table.hpp), the texels of its
 // roughness and view, and Minv times the frame as rows: t = Minv (d.tx, d.ty, d.n).
 struct AlLtc {
@@ -203,9 +272,13 @@ AlLtc al_ltc_lookup(AlCase c) {
     } else {
         al_tangent_frame(L.n, tx, ty);
     }
+#ifdef AL_TABLE_FIT
+    al_ltc_fit_lookup(real(c.params.x), L.nv, ty_len, L.m, L.amp);
+#else
     vec2 uv = al_ltc_uv(real(c.params.x), L.nv, ty_len);
     L.m = rvec4(textureLod(al_ltc_matrix, uv, 0.0f));
     L.amp = rvec4(textureLod(al_ltc_amplitude, uv, 0.0f));
+#endif
     L.row0 = L.m.x * tx + L.m.y * L.n;
     L.row1 = L.m.z * ty;
     L.row2 = L.m.w * tx + L.n;
@@ -221,9 +294,14 @@ real al_ltc_proxy_form(hvec3 vector_ff) {
     real form = AL_R(0.0);
     if (len > AL_R(0.0)) {
         real cz = clamp(real(vector_ff.z) / (len * AL_TWO_PI), AL_R(-1.0), AL_R(1.0));
+#ifdef AL_TABLE_FIT
+        // table=fit: the closed form the table holds, |F| S = I (sin^2 sigma = |F|).
+        form = al_ltc_sphere_clipped(cz, min(len, AL_R(1.0)));
+#else
         rvec2 suv = (rvec2(cz * AL_R(0.5) + AL_R(0.5), min(len, AL_R(1.0))) *
                          (AL_LTC_SIZE - AL_R(1.0)) + AL_R(0.5)) / AL_LTC_SIZE;
         form = len * real(textureLod(al_ltc_amplitude, vec2(suv), 0.0f).w);
+#endif
     }
     return form;
 }

@@ -127,6 +127,10 @@ TEST_CASE("a variant stitches the library types, common, its family's templates,
         const VariantFamily* family = find_family(v);
         REQUIRE(family);
         std::vector<std::string> want = {"templates/library_types.glsl", "templates/common.glsl"};
+        // A key value's parts first (table=fit: its closed form), then the row's own.
+        for (const auto& part : family->parts)
+            if (variant_matches(v, part.key + "=" + part.value))
+                for (const auto& t : part.templates) want.push_back("templates/" + t);
         for (const auto& t : family->templates) want.push_back("templates/" + t);
         // The light's entry: a polygon's own; a curved light's ellipse, its proxy
         // polygon (used by the polygon methods), then its own reduction.

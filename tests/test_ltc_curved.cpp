@@ -369,7 +369,7 @@ TEST_CASE("ltc curved: every variant finite and non-negative at the extremes, 0 
             }
         }
     }
-    CHECK(variants == 4 * 3 * 2);  // dist x light x horizon
+    CHECK(variants == (4 + 1) * 3 * 2);  // (dist + ggx table=fit) x light x horizon
 }
 
 }  // namespace arealight::test

@@ -111,13 +111,14 @@ TEST_CASE("enumeration: every variant valid, unique, and round-trips", "[variant
     // closest, blend; one shape, fit=tuned.
     const std::size_t microfacet_peak_polygon = 3 * 3 * 2 * 2;
     // phong, blinn, beckmann, ggx x ltc: precision fp32, fp16 x horizon clip, proxy x
-    // edge acos, poly; one shape.
-    const std::size_t ltc_polygon = 4 * 2 * 2 * 2;
+    // edge acos, poly; one shape; ggx also x table texture, fit.
+    const std::size_t ltc_polygon = 4 * 2 * 2 * 2 + 2 * 2 * 2;
     // Curved lights (disk, sphere, ellipsoid), each: phong lorentz, pearson, ellipsoid
     // with proxy 4, 16 x orient rim, paper; the microfacet peak methods with the
     // default proxy; the point baseline of each distribution; ltc of each distribution,
-    // horizon clip or proxy; exact of each distribution at its default keys, fp64 or fp32.
-    const std::size_t curved = 3 * (3 * 2 * 2 + 3 * 3 + 4 + 4 * 2 + 4 * 2);
+    // horizon clip or proxy (ggx also x table texture, fit); exact of each distribution at
+    // its default keys, fp64 or fp32.
+    const std::size_t curved = 3 * (3 * 2 * 2 + 3 * 3 + 4 + 4 * 2 + 2 + 4 * 2);
     // mrp: every distribution and light, one shape each.
     const std::size_t mrp = 4 * 4;
     INFO("enumerated " << all.size());

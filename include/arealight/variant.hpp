@@ -53,6 +53,11 @@ enum class Horizon { Clip, Proxy };
 // method=ltc: the edge integral's theta / sin(theta) by acos (exact) or by a
 // polynomial in cos(theta) (seed 001, fp16-friendly).
 enum class Edge { Acos, Poly };
+// method=ltc (GGX): where the fitted coefficients come from: texture (the two 64 x 64
+// tables, sampled bilinearly) or fit (closed-form polynomials of the same grid
+// coordinates, templates/ltc_ggx_fit.glsl from scripts/fit_ltc_ggx_closed.py, and the
+// horizon proxy's closed form: no table, no sampler).
+enum class Table { Texture, Fit };
 // Curved lights through a polygon method (seed 000 section 9, the spinning polygon):
 // how the proxy regular polygon is turned at each shading point. rim: area-matched,
 // one edge crossing the light's rim where the mirror ray meets the light's plane;
@@ -77,6 +82,7 @@ struct Variant {
     Factor factor = Factor::Blend;   // microfacet peak methods
     Horizon horizon = Horizon::Clip;  // method=ltc
     Edge edge = Edge::Acos;           // method=ltc
+    Table table = Table::Texture;     // method=ltc, GGX
     int proxy = 16;                   // curved lights, polygon methods: proxy polygon's size
     Orient orient = Orient::Rim;      // curved lights, polygon methods: its orientation rule
 
@@ -95,6 +101,7 @@ const char* to_string(Split s);
 const char* to_string(Factor f);
 const char* to_string(Horizon h);
 const char* to_string(Edge e);
+const char* to_string(Table t);
 const char* to_string(Orient o);
 
 // Whether the method is one of seed 000's peak functions (keys fit, specular).
@@ -164,6 +171,15 @@ struct FamilyKey {
     std::vector<std::string> values;
     std::string default_value;
 };
+// A key value that changes what a family stitches and samples (method=ltc's
+// table=fit: closed-form code in place of the tables): its templates are stitched
+// first (after templates/common.glsl), and without_samplers drops the family's samplers.
+struct FamilyKeyParts {
+    std::string key;
+    std::string value;
+    std::vector<std::string> templates;
+    bool without_samplers = false;
+};
 struct VariantFamily {
     Distribution dist;
     Method method;
@@ -177,11 +193,18 @@ struct VariantFamily {
     // Whether the shader returns the quantity beside specular (ndf for microfacets,
     // moment for phong; CONTRACT.md 2): the point baselines and ltc do not.
     bool second_quantity = true;
+    std::vector<FamilyKeyParts> parts = {};
 };
 
 const std::vector<VariantFamily>& variant_families();
 
 // The family row of the variant's (dist, method, light), or nullptr when none.
 const VariantFamily* find_family(const Variant& v);
+
+// What the variant stitches between templates/common.glsl and the light's entry, and
+// the tables it samples: its family's, with the parts of the key values it has
+// (VariantFamily::parts). Empty for a variant without a family.
+std::vector<std::string> variant_family_templates(const Variant& v);
+std::vector<std::string> variant_samplers(const Variant& v);
 
 }  // namespace arealight
