@@ -10,6 +10,7 @@ PACKAGES=(
   libglm-dev libfmt-dev libcli11-dev nlohmann-json3-dev catch2
   libboost-dev libzstd-dev libcapstone-dev libnlopt-cxx-dev libpng-dev ninja-build
   clang libclang-rt-14-dev
+  python3
 )
 
 missing=()
