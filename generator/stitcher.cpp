@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <set>
 
+#include "arealight/fnv_hash.hpp"
 #include "arealight/generator.hpp"
 #include "embedded_templates.hpp"
 
@@ -58,16 +59,6 @@ const LightEntry* find_light(LightType t) {
     for (const auto& e : light_entries())
         if (e.light == t) return &e;
     return nullptr;
-}
-
-// FNV-1a 64 of a text: names a library's include guard after its contents.
-uint64_t text_hash(const std::string& text) {
-    uint64_t h = 1469598103934665603ull;
-    for (unsigned char c : text) {
-        h ^= c;
-        h *= 1099511628211ull;
-    }
-    return h;
 }
 
 int count_lines(const std::string& s) {
@@ -421,7 +412,7 @@ void emit_library(std::string& out, const std::vector<Variant>& variants, Langua
         out += fmt::format("#define AREALIGHT_HAS_{}_{} 1\n", upper(to_string(v.light)),
                            upper(to_string(v.dist)));
     }
-    const std::string hash = fmt::format("{:016X}", text_hash(out.substr(body_at)));
+    const std::string hash = fmt::format("{:016X}", fnv1a(std::string_view(out).substr(body_at)));
     for (std::size_t at = out.find(placeholder, guard_at); at < body_at;
          at = out.find(placeholder, at + hash.size()))
         out.replace(at, hash.size(), hash);

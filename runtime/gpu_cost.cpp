@@ -11,6 +11,7 @@
 
 #include "arealight/atomic_file.hpp"
 #include "arealight/evaluator.hpp"
+#include "arealight/fnv_hash.hpp"
 #include "arealight/read_file.hpp"
 #include "arealight/report.hpp"
 #include "arealight/unroll_loops.hpp"
@@ -35,23 +36,13 @@ std::string mesa_version(const std::string& driver_info) {
     return driver_info.rfind(prefix, 0) == 0 ? driver_info.substr(prefix.size()) : driver_info;
 }
 
-// FNV-1a over the module's bytes: with the word count beside it in the file name, a
-// collision between two of the few thousand modules a project compiles is negligible.
-uint64_t module_hash(const std::vector<uint32_t>& words) {
-    uint64_t h = 1469598103934665603ull;
-    for (uint32_t w : words)
-        for (int b = 0; b < 4; ++b) {
-            h ^= (w >> (8 * b)) & 0xffu;
-            h *= 1099511628211ull;
-        }
-    return h;
-}
-
-// The cache file of a module, "<dir>/<family>-<mesa>-<words>-<hash>.json".
+// The cache file of a module, "<dir>/<family>-<mesa>-<words>-<hash>.json": with the word
+// count beside the hash, a clash between two of the few thousand modules a project
+// compiles is negligible.
 std::string cache_path(const GpuCostOptions& opt, const std::string& family,
                        const std::string& mesa, const std::vector<uint32_t>& words) {
     return fmt::format("{}/{}-{}-{}-{:016x}.json", opt.cache_dir, family, mesa, words.size(),
-                       module_hash(words));
+                       fnv1a(words));
 }
 
 std::optional<RadvStatistics> read_cached(const std::string& path) {

@@ -1,6 +1,7 @@
 // Headless compute on Vulkan 1.1 (lavapipe in CI). Every VkResult is checked and every handle is
 // owned by an RAII wrapper, so an early return releases exactly what was created.
 #include "arealight/vulkan_runner.hpp"
+#include "arealight/fnv_hash.hpp"
 
 #include <vulkan/vulkan.h>
 
@@ -212,22 +213,15 @@ struct HostBuffer {
     }
 };
 
-// FNV-1a over the words: the pipeline cache key (entries also keep the words to rule out clashes).
+// The pipeline cache key (entries also keep the words to rule out clashes).
 uint64_t hash_words(const std::vector<uint32_t>& words) {
-    uint64_t h = 1469598103934665603ull;
-    for (uint32_t w : words) {
-        for (int i = 0; i < 4; ++i) {
-            h ^= (w >> (8 * i)) & 0xffu;
-            h *= 1099511628211ull;
-        }
-    }
-    return h;
+    return fnv1a(words);
 }
 
 // The texture cache key: size and texel bits, a word at a time (entries keep the texels to
 // rule out clashes). Bits, not values: -0 and 0, or two NaNs, are different tables.
 uint64_t hash_texture(const Texture2D& t) {
-    uint64_t h = 1469598103934665603ull;
+    uint64_t h = kFnvOffset;
     auto mix = [&h](uint64_t w) {
         h ^= w;
         h *= 1099511628211ull;

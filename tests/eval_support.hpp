@@ -110,8 +110,9 @@ struct OracleBars {
 constexpr OracleBars kClosedFormDiffuse = {1e300, 1e-5, 1e-4, 1e-3};
 
 // Runs `name` on `cases` on the CPU mirror and on lavapipe and checks each against the
-// oracle's `ref` and the two against each other, printing the measured values.
-inline void check_both_backends(const std::string& name, const CaseSet& cases,
+// oracle's `ref` and the two against each other, printing the measured values; returns
+// each backend's results for further checks.
+inline std::map<Backend, ResultSet> check_both_backends(const std::string& name, const CaseSet& cases,
                                 const std::map<std::string, CaseResult>& ref,
                                 const OracleBars& bars) {
     std::map<Backend, ResultSet> out;
@@ -141,6 +142,7 @@ inline void check_both_backends(const std::string& name, const CaseSet& cases,
     const double worst = worst_difference(out[Backend::Vulkan], out[Backend::Cpu], worst_at, 1e-2);
     INFO(name << ": worst CPU/GPU relative difference " << worst << " at " << worst_at);
     CHECK(worst <= bars.backend);
+    return out;
 }
 
 // The variant on the CPU mirror on `cases` and on the same cases each moved by a random
