@@ -114,6 +114,11 @@ void emit_language_macros(std::string& out, const Variant& v, Language lang) {
     // control, which Mesa's NIR (RADV, lavapipe) and other drivers honour; the C++
     // mirror's compiler decides for itself.
     out += lang == Language::Glsl ? "#define AL_UNROLL [[unroll]]\n" : "#define AL_UNROLL\n";
+    // A constant array's initialiser: GLSL ES 3.10 has no C-style braces, only the array
+    // constructor real[N](...); C++ has no array constructor. Written
+    // AL_ARRAY_BEGIN(real, 8) a, b, ... AL_ARRAY_END.
+    out += lang == Language::Glsl ? "#define AL_ARRAY_BEGIN(T, N) T[N](\n#define AL_ARRAY_END )\n"
+                                  : "#define AL_ARRAY_BEGIN(T, N) {\n#define AL_ARRAY_END }\n";
     // The half-precision part of a variant computes in hreal and hvec2..4: fp16 where
     // the precision is fp16 (the mirror's al_half rounds every operation to fp16,
     // include/arealight/mirror_support.hpp), else the working precision.
@@ -189,8 +194,12 @@ void emit_samplers(std::string& out, const Variant& v, Language lang, int first)
     for (std::size_t i = 0; i < samplers.size(); ++i) {
         if (lang == Language::Glsl) {
             const std::string macro = sampler_binding_macro(v, samplers[i]);
-            out += fmt::format("#ifndef {0}\n#define {0} (AREALIGHT_BINDING + {1})\n#endif\n",
-                               macro, first + static_cast<int>(i));
+            // A literal unless the renderer moves every table with AREALIGHT_BINDING: GLSL ES
+            // 3.10 takes only literals as layout ids.
+            out += fmt::format(
+                "#ifndef {0}\n#ifdef AREALIGHT_BINDING\n#define {0} (AREALIGHT_BINDING + {1})\n"
+                "#else\n#define {0} {1}\n#endif\n#endif\n",
+                macro, first + static_cast<int>(i));
             out += fmt::format("layout(set = AREALIGHT_SET, binding = {}) uniform sampler2D {};\n",
                                macro, samplers[i]);
         } else {

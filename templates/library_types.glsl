@@ -19,11 +19,10 @@ struct ArealightShading {
     float specular;
 };
 #endif
-// Descriptor set and first binding of the tables a method samples (method=ltc);
-// each sampler also has its own AREALIGHT_<LIGHT>_<DIST>_<NAME>_BINDING.
+// Descriptor set of the tables a method samples (method=ltc). Their bindings: each
+// sampler's own AREALIGHT_<LIGHT>_<DIST>_<NAME>_BINDING, else AREALIGHT_BINDING plus
+// its index where the renderer defines AREALIGHT_BINDING, else the literal index
+// (GLSL ES 3.10 takes only literal layout ids; the library does not define it).
 #ifndef AREALIGHT_SET
 #define AREALIGHT_SET 0
-#endif
-#ifndef AREALIGHT_BINDING
-#define AREALIGHT_BINDING 0
 #endif

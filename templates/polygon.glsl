@@ -5,6 +5,12 @@
 // holds no per-vertex arrays (on lavapipe the arrays of a stored clip were 2/3 of
 // the machine code and of the JIT time).
 
+// Curved lights (spin_polygon.glsl) have no sided key: their two_sided is the
+// function's argument, as AL_SIDED 0 says (GLSL ES refuses an undefined macro in #if).
+#ifndef AL_SIDED
+#define AL_SIDED 0
+#endif
+
 // Which side of the light p (the origin) sees: +1 front, -1 back, 0 on its plane
 // or not emitting towards p (one-sided back face).
 real al_polygon_side(AlCase c) {

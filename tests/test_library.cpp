@@ -265,4 +265,71 @@ TEST_CASE("a library holds one variant per light type and distribution", "[libra
     CHECK(why.find("arealight_polygon_ggx") != std::string::npos);
 }
 
+// The call of each light type's CONTRACT.md 5 function in the GLSL ES test shader.
+static std::string es_call(const Variant& v) {
+    const std::string name = std::string("arealight_") + to_string(v.light) + "_" + to_string(v.dist);
+    switch (v.light) {
+        case LightType::Polygon:
+            return "vec3 q[8];\n    for (int i = 0; i < 8; ++i) q[i] = vec3(0.0);\n"
+                   "    q[0] = vec3(-1.0, -1.0, 2.0); q[1] = vec3(1.0, -1.0, 2.0);\n"
+                   "    q[2] = vec3(1.0, 1.0, 2.0); q[3] = vec3(-1.0, 1.0, 2.0);\n"
+                   "    ArealightShading r = " + name + "(s, q, 4, true);\n";
+        case LightType::Disk:
+            return "ArealightShading r = " + name +
+                   "(s, vec3(0.0, 0.0, 2.0), vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0), true);\n";
+        case LightType::Sphere:
+            return "ArealightShading r = " + name + "(s, vec3(0.0, 0.0, 2.0), 0.5);\n";
+        case LightType::Ellipsoid:
+            return "vec3 ax[3];\n    ax[0] = vec3(0.5, 0.0, 0.0); ax[1] = vec3(0.0, 0.4, 0.0);\n"
+                   "    ax[2] = vec3(0.0, 0.0, 0.3);\n    ArealightShading r = " + name +
+                   "(s, vec3(0.0, 0.0, 2.0), ax);\n";
+    }
+    return "";
+}
+
+// GLSL ES 3.10 (the mobile target of Heitz et al. 2016's LTC) has no double, no C-style
+// array initialisers and only literal layout ids: every family that has an fp32 variant
+// (its default keys, at fp32 where the default is fp64) must compile there as a user's
+// `#version 310 es` compute shader that includes its library, tables and all.
+TEST_CASE("every fp32 family's library compiles as GLSL ES 3.10", "[library][es]") {
+    std::vector<Variant> families;
+    for (const Variant& v : enumerate_variants()) {
+        bool seen = false;
+        for (const Variant& f : families)
+            seen = seen || (f.dist == v.dist && f.method == v.method && f.light == v.light);
+        if (seen) continue;
+        std::string name = std::string("dist=") + to_string(v.dist) + ",method=" +
+                           to_string(v.method) + ",light=" + to_string(v.light);
+        Variant d = variant(name);
+        if (effective_precision(d) == Precision::Fp64) {
+            d.precision = Precision::Fp32;
+            if (!is_valid(d)) continue;
+        }
+        families.push_back(d);
+    }
+    REQUIRE(families.size() >= 40);
+    ScratchFolder dir("library_es");
+    for (const Variant& v : families) {
+        dir.write("es_library.glsl", library({v}));
+        const std::string shader =
+            "#version 310 es\nprecision highp float;\nprecision highp int;\n"
+            "#include \"es_library.glsl\"\n"
+            "layout(local_size_x = 1) in;\n"
+            "layout(std430, binding = 7) buffer Out { vec4 o[]; };\n"
+            "void main() {\n    ArealightSurface s;\n"
+            "    s.p = vec3(0.0); s.n = vec3(0.0, 0.0, 1.0); s.v = vec3(0.0, 0.6, 0.8);\n"
+            "    s.param = 0.3; s.f0 = 1.0;\n    " + es_call(v) +
+            "    o[0] = vec4(r.diffuse, r.specular, 0.0, 0.0);\n}\n";
+        std::string why;
+        CompileOptions options;
+        options.includes = true;
+        options.include_dirs = {dir / ""};
+        const auto spirv = compile_glsl(shader, dir / "es.comp", options, [&](const Diagnostic& d) {
+            why += d.file + ":" + std::to_string(d.line) + ": " + d.message + "\n";
+        });
+        INFO(canonical_name(v) << "\n" << why);
+        CHECK(spirv);
+    }
+}
+
 }  // namespace arealight::test

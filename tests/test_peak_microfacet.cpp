@@ -30,6 +30,8 @@
         return std::sqrt(2.0 / (double(std::max({x.N.x, x.N.y, x.N.z})) + 2.0)); \
     }
 #define AL_INOUT(T) T&
+#define AL_ARRAY_BEGIN(T, N) {
+#define AL_ARRAY_END }
 #define real double
 #define rvec2 dvec2
 #define rvec3 dvec3

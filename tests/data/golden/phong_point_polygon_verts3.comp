@@ -8,8 +8,8 @@
 // The shading library of CONTRACT.md 5: include it in any stage. Names outside
 // the contract's are prefixed al_<light>_<dist>_ (AL_..., Al...) so that they
 // cannot collide with a renderer's or another arealight library's.
-#ifndef AREALIGHT_LIBRARY_0F51F14D7736A5CD
-#define AREALIGHT_LIBRARY_0F51F14D7736A5CD 1
+#ifndef AREALIGHT_LIBRARY_F2D50FB60A12FA3E
+#define AREALIGHT_LIBRARY_F2D50FB60A12FA3E 1
 #extension GL_GOOGLE_cpp_style_line_directive : enable
 #extension GL_EXT_control_flow_attributes : enable
 #line 1 "templates/library_types.glsl"
@@ -34,18 +34,19 @@ struct ArealightShading {
     float specular;
 };
 #endif
-// Descriptor set and first binding of the tables a method samples (method=ltc);
-// each sampler also has its own AREALIGHT_<LIGHT>_<DIST>_<NAME>_BINDING.
+// Descriptor set of the tables a method samples (method=ltc). Their bindings: each
+// sampler's own AREALIGHT_<LIGHT>_<DIST>_<NAME>_BINDING, else AREALIGHT_BINDING plus
+// its index where the renderer defines AREALIGHT_BINDING, else the literal index
+// (GLSL ES 3.10 takes only literal layout ids; the library does not define it).
 #ifndef AREALIGHT_SET
 #define AREALIGHT_SET 0
 #endif
-#ifndef AREALIGHT_BINDING
-#define AREALIGHT_BINDING 0
-#endif
-#line 46 "arealight-generated"
+#line 45 "arealight-generated"
 #define AL_POLYGON_PHONG_LANG_GLSL 1
 #define AL_POLYGON_PHONG_INOUT(T) inout T
 #define AL_POLYGON_PHONG_UNROLL [[unroll]]
+#define AL_POLYGON_PHONG_ARRAY_BEGIN(T, N) T[N](
+#define AL_POLYGON_PHONG_ARRAY_END )
 #define al_polygon_phong_hreal float
 #define al_polygon_phong_hvec2 vec2
 #define al_polygon_phong_hvec3 vec3
@@ -295,7 +296,7 @@ void al_polygon_phong_tangent_frame(al_polygon_phong_rvec3 z, AL_POLYGON_PHONG_I
 // precision: a value beyond the fp32 range is thus caught here too.
 float al_polygon_phong_clean(float x) { return (x >= 0.0f && x <= 3.0e38f) ? x : 0.0f; }
 vec4 al_polygon_phong_clean(vec4 x) { return vec4(al_polygon_phong_clean(x.x), al_polygon_phong_clean(x.y), al_polygon_phong_clean(x.z), al_polygon_phong_clean(x.w)); }
-#line 299 "arealight-generated"
+#line 300 "arealight-generated"
 #line 1 "templates/dist_phong.glsl"
 // Energy-conserving Phong, CONTRACT.md 2: f = (N+2)/(2 pi) (r.w)_+^N.
 
@@ -312,7 +313,7 @@ al_polygon_phong_real al_polygon_phong_phong_power(al_polygon_phong_rvec3 r, al_
 al_polygon_phong_real al_polygon_phong_phong_brdf(al_polygon_phong_rvec3 r, al_polygon_phong_rvec3 w, al_polygon_phong_real N) {
     return (N + 2.0f) / AL_POLYGON_PHONG_TWO_PI * al_polygon_phong_phong_power(r, w, N);
 }
-#line 316 "arealight-generated"
+#line 317 "arealight-generated"
 #line 1 "templates/point_light.glsl"
 // A point light of solid angle omega in direction w (unit): the point-light baseline
 // every speed ratio divides by (light_polygon.glsl: the polygon's centre;
@@ -330,7 +331,7 @@ vec4 al_polygon_phong_point_light(AlPolygonPhongCase c, al_polygon_phong_rvec3 n
 #endif
     return vec4(nw / AL_POLYGON_PHONG_PI * solid_angle, spec, 0.0f, 0.0f);
 }
-#line 334 "arealight-generated"
+#line 335 "arealight-generated"
 #line 1 "templates/polygon.glsl"
 // Polygon lights (CONTRACT.md 1) as spherical polygons: orientation, sidedness,
 // exact clipping to the hemispheres of n and of the lobe axis, and the exact diffuse
@@ -338,6 +339,12 @@ vec4 al_polygon_phong_point_light(AlPolygonPhongCase c, al_polygon_phong_rvec3 n
 // streamed one by one into the method's accumulator (al_moments_*), so the shader
 // holds no per-vertex arrays (on lavapipe the arrays of a stored clip were 2/3 of
 // the machine code and of the JIT time).
+
+// Curved lights (spin_polygon.glsl) have no sided key: their two_sided is the
+// function's argument, as AL_SIDED 0 says (GLSL ES refuses an undefined macro in #if).
+#ifndef AL_POLYGON_PHONG_SIDED
+#define AL_POLYGON_PHONG_SIDED 0
+#endif
 
 // Which side of the light p (the origin) sees: +1 front, -1 back, 0 on its plane
 // or not emitting towards p (one-sided back face).
@@ -495,7 +502,7 @@ al_polygon_phong_rvec2 al_polygon_phong_polygon_moments(AlPolygonPhongCase c, al
 #endif
 #endif
 #endif
-#line 499 "arealight-generated"
+#line 506 "arealight-generated"
 #line 1 "templates/light_polygon.glsl"
 // Shading of polygon lights (CONTRACT.md 2) by each method: the point-light
 // baseline, or clipping (polygon.glsl) and the method's boundary moments.
@@ -613,7 +620,7 @@ vec4 al_polygon_phong_shade(AlPolygonPhongCase c) {
     return vec4(diffuse, specular, sm.y, 0.0f);
 }
 #endif
-#line 617 "arealight-generated"
+#line 624 "arealight-generated"
 #line 1 "templates/library_polygon.glsl"
 // The library entry for polygon lights (CONTRACT.md 5): the renderer's fp32 values,
 // in any consistent space, turned into the record the methods work on, in the
@@ -665,7 +672,7 @@ AlPolygonPhongCase al_polygon_phong_polygon_record(ArealightSurface s, vec3 vert
 vec4 al_polygon_phong_polygon_evaluate(ArealightSurface s, vec3 vertices[8], int count, bool two_sided) {
     return al_polygon_phong_clean(al_polygon_phong_shade(al_polygon_phong_polygon_record(s, vertices, count, two_sided)));
 }
-#line 669 "arealight-generated"
+#line 676 "arealight-generated"
 // arealight_polygon_phong: variant dist=phong,method=point,light=polygon,verts=3.
 // Domain: p, n, v, the light in one space, fp32 (n, v any length); convex planar polygon, counter-clockwise seen from its emitting side, count in [3, AL_MAX_VERTS] (more are cut to the first AL_MAX_VERTS); s.param the exponent N in [1, 1e5]; s.f0 in [0, 1] (ignored).
 // Returns diffuse and specular of CONTRACT.md 2 for unit radiance: finite, >= 0.
@@ -678,7 +685,7 @@ ArealightShading arealight_polygon_phong(ArealightSurface s, vec3 vertices[8], i
     return result;
 }
 #define AREALIGHT_HAS_POLYGON_PHONG 1
-#endif  // AREALIGHT_LIBRARY_0F51F14D7736A5CD
+#endif  // AREALIGHT_LIBRARY_F2D50FB60A12FA3E
 #define AL_KERNEL_SHADE arealight_polygon_phong
 #define AL_KERNEL_EVALUATE al_polygon_phong_polygon_evaluate
 #define AL_KERNEL_ARGS vertices, count, two_sided
@@ -735,4 +742,4 @@ void main() {
 #endif
     al_results[i] = result;
 }
-#line 739 "arealight-generated"
+#line 746 "arealight-generated"
