@@ -185,25 +185,35 @@ void emit_tables(std::string& out, const Variant& v, Language lang, const std::s
     if (family_uses(v, "radial")) rule(v.radial, "AL_GR_X", "AL_GR_W");
 }
 
-// The tables the variant samples (variant_samplers): in GLSL sampled images at
-// set AREALIGHT_SET and binding AREALIGHT_<TAG>_<NAME>_BINDING, which defaults to
-// AREALIGHT_BINDING plus the sampler's index in the library (`first`); in C++ the
-// mirror's samplers (bound by its run(), generator/mirror_tool.cpp).
-void emit_samplers(std::string& out, const Variant& v, Language lang, int first) {
-    const std::vector<std::string> samplers = variant_samplers(v);
-    for (std::size_t i = 0; i < samplers.size(); ++i) {
-        if (lang == Language::Glsl) {
-            const std::string macro = sampler_binding_macro(v, samplers[i]);
+// What stands in a chunk, before its renaming, for a sampler that shares an earlier
+// variant's table: one comment line (never renamed), replaced after the renaming by the
+// #define that makes the variant's name the earlier one's (same line count).
+std::string shared_sampler_marker(std::size_t entry) {
+    return fmt::format("// arealight shared sampler {}\n", entry);
+}
+
+// The tables the variant samples (`entries`, its part of library_samplers): in GLSL
+// sampled images at set AREALIGHT_SET and binding AREALIGHT_<TAG>_<NAME>_BINDING,
+// which defaults to AREALIGHT_BINDING plus the sampler's binding offset in the library,
+// or, for a table an earlier variant's sampler already reads, a marker for the alias;
+// in C++ the mirror's samplers (bound by its run(), generator/mirror_tool.cpp).
+void emit_samplers(std::string& out, const Variant& v, Language lang,
+                   const std::vector<std::pair<std::size_t, LibrarySampler>>& entries) {
+    for (const auto& [entry, s] : entries) {
+        if (lang == Language::Glsl && s.shares >= 0) {
+            out += shared_sampler_marker(entry);
+        } else if (lang == Language::Glsl) {
+            const std::string macro = sampler_binding_macro(v, s.sampler);
             // A literal unless the renderer moves every table with AREALIGHT_BINDING: GLSL ES
             // 3.10 takes only literals as layout ids.
             out += fmt::format(
                 "#ifndef {0}\n#ifdef AREALIGHT_BINDING\n#define {0} (AREALIGHT_BINDING + {1})\n"
                 "#else\n#define {0} {1}\n#endif\n#endif\n",
-                macro, first + static_cast<int>(i));
+                macro, s.binding_offset);
             out += fmt::format("layout(set = AREALIGHT_SET, binding = {}) uniform sampler2D {};\n",
-                               macro, samplers[i]);
+                               macro, s.sampler);
         } else {
-            out += fmt::format("static thread_local AlSampler2D {};\n", samplers[i]);
+            out += fmt::format("static thread_local AlSampler2D {};\n", s.sampler);
         }
     }
 }
@@ -264,92 +274,7 @@ void emit_public_function(std::string& out, const Variant& v, const LibraryOptio
     out += "    return result;\n}\n";
 }
 
-// Names the mirror's support header defines (include/arealight/mirror_support.hpp):
-// shared by every variant, never renamed.
-bool shared_support_name(const std::string& id) {
-    static const std::set<std::string> names = {"AlSampler2D", "al_half", "al_hvec2", "al_hvec3",
-                                                "al_hvec4"};
-    return names.count(id) != 0;
-}
-
-bool precision_word(const std::string& id) {
-    static const std::set<std::string> words = {"real",  "rvec2", "rvec3", "rvec4",
-                                                "hreal", "hvec2", "hvec3", "hvec4"};
-    return words.count(id) != 0;
-}
-
-std::string camel(const std::string& tag) {
-    std::string out;
-    bool up = true;
-    for (char c : tag) {
-        if (c == '_') {
-            up = true;
-            continue;
-        }
-        out += up ? static_cast<char>(std::toupper(static_cast<unsigned char>(c))) : c;
-        up = false;
-    }
-    return out;
-}
-
-std::string rename_identifier(const std::string& id, const std::string& tag) {
-    if (shared_support_name(id)) return id;
-    if (id.rfind("al_", 0) == 0) return "al_" + tag + "_" + id.substr(3);
-    if (id.rfind("AL_", 0) == 0) return "AL_" + upper(tag) + "_" + id.substr(3);
-    if (id.size() > 2 && id.rfind("Al", 0) == 0 && std::isupper(static_cast<unsigned char>(id[2])))
-        return "Al" + camel(tag) + id.substr(2);
-    if (precision_word(id)) return "al_" + tag + "_" + id;
-    return id;
-}
-
 }  // namespace
-
-std::string library_rename(const std::string& text, const Variant& v) {
-    const std::string tag = tag_of(v);
-    std::string out;
-    out.reserve(text.size() + text.size() / 8);
-    const std::size_t n = text.size();
-    std::size_t i = 0;
-    auto ident_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
-    while (i < n) {
-        const char c = text[i];
-        if (c == '/' && i + 1 < n && text[i + 1] == '/') {  // line comment: kept as written
-            const std::size_t end = text.find('\n', i);
-            const std::size_t stop = end == std::string::npos ? n : end;
-            out.append(text, i, stop - i);
-            i = stop;
-        } else if (c == '/' && i + 1 < n && text[i + 1] == '*') {
-            const std::size_t end = text.find("*/", i + 2);
-            const std::size_t stop = end == std::string::npos ? n : end + 2;
-            out.append(text, i, stop - i);
-            i = stop;
-        } else if (c == '"') {  // #line file names
-            const std::size_t end = text.find('"', i + 1);
-            const std::size_t stop = end == std::string::npos ? n : end + 1;
-            out.append(text, i, stop - i);
-            i = stop;
-        } else if (std::isdigit(static_cast<unsigned char>(c)) ||
-                   (c == '.' && i + 1 < n && std::isdigit(static_cast<unsigned char>(text[i + 1])))) {
-            // A number, exponent and suffix included (1e-5f, 0.5lf): not an identifier.
-            std::size_t j = i + 1;
-            while (j < n && (ident_char(text[j]) || text[j] == '.' ||
-                             ((text[j] == '-' || text[j] == '+') &&
-                              (text[j - 1] == 'e' || text[j - 1] == 'E'))))
-                ++j;
-            out.append(text, i, j - i);
-            i = j;
-        } else if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
-            std::size_t j = i + 1;
-            while (j < n && ident_char(text[j])) ++j;
-            out += rename_identifier(text.substr(i, j - i), tag);
-            i = j;
-        } else {
-            out += c;
-            ++i;
-        }
-    }
-    return out;
-}
 
 std::string kernel_light_arguments(const Variant& v) {
     const LightEntry* light = find_light(v.light);
@@ -405,18 +330,35 @@ void emit_library(std::string& out, const std::vector<Variant>& variants, Langua
         }
     }
     emit_template(out, "templates/library_types.glsl", lookup, "");
-    int sampler = 0;
-    for (const auto& v : variants) {
+    const std::vector<LibrarySampler> plan = library_samplers(variants);
+    for (std::size_t vi = 0; vi < variants.size(); ++vi) {
+        const Variant& v = variants[vi];
+        std::vector<std::pair<std::size_t, LibrarySampler>> entries;
+        for (std::size_t e = 0; e < plan.size(); ++e)
+            if (plan[e].variant == vi) entries.emplace_back(e, plan[e]);
         const std::size_t start = out.size();
         emit_language_macros(out, v, lang);
         emit_defines(out, v);
         const std::string suffix = literal_suffix(v, lang);
         emit_tables(out, v, lang, suffix);
-        emit_samplers(out, v, lang, sampler);
-        sampler += static_cast<int>(variant_samplers(v).size());
+        emit_samplers(out, v, lang, entries);
         for (const auto& path : chunk_templates(v)) emit_template(out, path, lookup, suffix);
         emit_public_function(out, v, opt);
-        out.replace(start, std::string::npos, library_rename(out.substr(start), v));
+        out.replace(start, std::string::npos,
+                    library_rename(out.substr(start), v,
+                                   lang == Language::Glsl ? RenameScope::EveryName
+                                                          : RenameScope::Prefixed));
+        for (const auto& [entry, s] : entries) {
+            if (s.shares < 0) continue;
+            const LibrarySampler& first = plan[static_cast<std::size_t>(s.shares)];
+            const std::string marker = shared_sampler_marker(entry);
+            const std::size_t at = out.find(marker, start);
+            if (at == std::string::npos) continue;
+            out.replace(at, marker.size(),
+                        fmt::format("#define {} {}  // the same table\n",
+                                    library_rename(s.sampler, v),
+                                    library_rename(first.sampler, variants[first.variant])));
+        }
         // What a renderer can #ifdef on (not renamed: outside the variant's namespace).
         out += fmt::format("#define AREALIGHT_HAS_{}_{} 1\n", upper(to_string(v.light)),
                            upper(to_string(v.dist)));
@@ -429,6 +371,29 @@ void emit_library(std::string& out, const std::vector<Variant>& variants, Langua
 }
 
 }  // namespace
+
+std::vector<LibrarySampler> library_samplers(const std::vector<Variant>& variants) {
+    std::vector<LibrarySampler> plan;
+    int next = 0;
+    for (std::size_t vi = 0; vi < variants.size(); ++vi) {
+        for (const auto& sampler : variant_samplers(variants[vi])) {
+            LibrarySampler s;
+            s.variant = vi;
+            s.sampler = sampler;
+            const std::string id = sampler_table_id(variants[vi], sampler);
+            for (std::size_t e = 0; e < plan.size() && s.shares < 0; ++e) {
+                if (plan[e].shares < 0 &&
+                    sampler_table_id(variants[plan[e].variant], plan[e].sampler) == id) {
+                    s.shares = static_cast<int>(e);
+                    s.binding_offset = plan[e].binding_offset;
+                }
+            }
+            if (s.shares < 0) s.binding_offset = next++;
+            plan.push_back(std::move(s));
+        }
+    }
+    return plan;
+}
 
 std::optional<std::string> generate_library(const std::vector<Variant>& variants, Language lang,
                                             const LibraryOptions& opt,

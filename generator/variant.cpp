@@ -821,6 +821,10 @@ std::vector<std::string> variant_samplers(const Variant& v) {
     return f->samplers;
 }
 
+std::string sampler_table_id(const Variant& v, const std::string& sampler) {
+    return sampler + "/" + to_string(v.dist);
+}
+
 std::optional<Variant> parse_variant(const std::string& name, const DiagnosticConsumer& diag) {
     const Tables& t = tables();
     auto fail = [&](const std::string& what) -> std::optional<Variant> {

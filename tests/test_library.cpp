@@ -7,17 +7,21 @@
 #include <fmt/format.h>
 
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 #include <cctype>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <regex>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "arealight/compiler.hpp"
 #include "arealight/evaluator.hpp"
 #include "arealight/generator.hpp"
+#include "arealight/library_tables.hpp"
 #include "arealight/vulkan_runner.hpp"
 #include "eval_support.hpp"
 #include "microfacet_cases.hpp"
@@ -330,6 +334,162 @@ TEST_CASE("every fp32 family's library compiles as GLSL ES 3.10", "[library][es]
         INFO(canonical_name(v) << "\n" << why);
         CHECK(spirv);
     }
+}
+
+// GLSL 4.50's words (keywords, types, built-in functions, preprocessor) that the
+// templates use: a renderer cannot #define these without breaking its own shader.
+const std::set<std::string> kGlslWords = {
+    "abs", "acos", "all", "any", "asin", "atan", "binding", "bool", "break", "buffer", "ceil",
+    "clamp", "const", "continue", "cos", "cross", "define", "defined", "do", "dot", "double",
+    "dvec2", "dvec3", "dvec4", "elif", "else", "enable", "endif", "error", "exp", "exp2",
+    "extension", "false", "float", "float16_t", "floor", "fma", "for", "fract", "frexp",
+    "f16vec2", "f16vec3", "f16vec4", "highp", "if", "ifdef", "ifndef", "in", "inout", "int",
+    "inversesqrt", "isinf", "isnan", "layout", "ldexp", "length", "line", "log", "log2",
+    "main", "max", "min", "mix", "mod", "normalize", "out", "pow", "precise", "return",
+    "round", "sampler2D", "set", "sign", "sin", "sqrt", "std430", "step", "struct", "tan",
+    "texture", "textureLod", "true", "uint", "uniform", "unroll", "vec2", "vec3", "vec4",
+    "void", "while"};
+
+bool swizzle_like(const std::string& id) {
+    if (id.size() > 4) return false;
+    for (const std::string set : {"xyzw", "rgba", "stpq"}) {
+        bool all = true;
+        for (char c : id) all = all && set.find(c) != std::string::npos;
+        if (all) return true;
+    }
+    return false;
+}
+
+// The names of a variant's templates, comments and #line/#extension/#error lines left out.
+std::set<std::string> template_names(const Variant& v) {
+    std::set<std::string> names;
+    const std::regex comment(R"(//[^\n]*|/\*[\s\S]*?\*/|\n[ \t]*#[ \t]*(line|extension|error)[^\n]*)");
+    const std::regex word(R"((^|[^\w.])([A-Za-z_]\w*))");
+    for (const auto& path : variant_templates(v, Language::Glsl)) {
+        const std::string* text = template_text(path);
+        REQUIRE(text);
+        const std::string code = std::regex_replace("\n" + *text, comment, " ");
+        for (auto it = std::sregex_iterator(code.begin(), code.end(), word);
+             it != std::sregex_iterator(); ++it)
+            names.insert((*it)[2].str());
+    }
+    return names;
+}
+
+// A renderer's shader may #define any name before the include (`#define N 16`): every
+// name of the templates that is not GLSL's own, not the contract's (CONTRACT.md 5:
+// Arealight*, arealight_*, AREALIGHT_*, the members p, n, v, param, f0, diffuse,
+// specular) and not swizzle-shaped (x, rgb: a struct member so spelled is written after
+// a dot like a swizzle and cannot be told from one) is #defined to an unknown name, and
+// the library must still compile and give the same SPIR-V as without them.
+TEST_CASE("a renderer's macros named like the library's internal names cannot reach it",
+          "[library]") {
+    const std::set<std::string> contract = {"p", "n", "v", "param", "f0", "diffuse", "specular",
+                                            "kernel_main"};
+    ScratchFolder dir("library_macros");
+    for (const char* name :
+         {"dist=phong,method=lorentz,light=polygon", "dist=ggx,method=ltc,light=polygon",
+          "dist=ggx,method=ltc,light=sphere,table=fit",
+          "dist=beckmann,method=exact,light=disk,precision=fp32",
+          "dist=blinn,method=pearson,light=ellipsoid", "dist=phong,method=exact,light=sphere",
+          "dist=ggx,method=mrp,light=polygon"}) {
+        const Variant v = variant(name);
+        dir.write("lib.glsl", library({v}));
+        std::string defines, undefines;
+        int count = 0;
+        for (const auto& id : template_names(v)) {
+            if (kGlslWords.count(id) || contract.count(id) || swizzle_like(id) ||
+                id.rfind("Arealight", 0) == 0 || id.rfind("arealight_", 0) == 0 ||
+                id.rfind("AREALIGHT_", 0) == 0 || id.rfind("GL_", 0) == 0 ||
+                id.rfind("gl_", 0) == 0)
+                continue;
+            defines += "#define " + id + " renderer_macro_" + std::to_string(count++) + "\n";
+            undefines += "#undef " + id + "\n";
+        }
+        INFO(name << ": " << count << " names defined before the include");
+        CHECK(count > 50);
+        const std::string body = std::string("#version 450\n") +
+                                 "#include \"lib.glsl\"\n"
+                                 "layout(local_size_x = 1) in;\n"
+                                 "layout(std430, binding = 7) buffer Out { vec4 o[]; };\n"
+                                 "void main() {\n    ArealightSurface s;\n"
+                                 "    s.p = vec3(0.0); s.n = vec3(0.0, 0.0, 1.0);\n"
+                                 "    s.v = vec3(0.0, 0.6, 0.8); s.param = 0.3; s.f0 = 1.0;\n    " +
+                                 es_call(v) +
+                                 "    o[0] = vec4(r.diffuse, r.specular, 0.0, 0.0);\n}\n";
+        auto compile = [&](const std::string& text) {
+            std::string why;
+            CompileOptions options;
+            options.includes = true;
+            options.include_dirs = {dir / ""};
+            auto spirv = compile_glsl(text, dir / "user.comp", options, [&](const Diagnostic& d) {
+                why += d.file + ":" + std::to_string(d.line) + ": " + d.message + "\n";
+            });
+            INFO(why);
+            REQUIRE(spirv);
+            return *spirv;
+        };
+        // Undefined again after the include: the test's own main() uses some of the names.
+        const auto at = body.find("#include");
+        const auto after = body.find('\n', at) + 1;
+        const std::string user = body.substr(0, at) + defines + body.substr(at, after - at) +
+                                 undefines + body.substr(after);
+        CHECK(compile(user) == compile(body));
+    }
+}
+
+// Polygon and sphere GGX LTC read the same two tables (the distribution's): one library
+// of both declares and binds each once, the sphere's names aliasing the polygon's, and
+// tables.json lists each once with the sphere under "also"; a third function of another
+// distribution takes the next bindings. The library compiles (every alias resolves).
+TEST_CASE("within one library, identical tables share one sampler", "[library]") {
+    const std::vector<Variant> variants = {variant("dist=ggx,method=ltc,light=polygon"),
+                                           variant("dist=ggx,method=ltc,light=sphere"),
+                                           variant("dist=beckmann,method=ltc,light=disk")};
+    const std::string text = library(variants);
+    std::size_t declared = 0;
+    for (auto at = text.find("uniform sampler2D"); at != std::string::npos;
+         at = text.find("uniform sampler2D", at + 1))
+        ++declared;
+    CHECK(declared == 4);
+    CHECK(text.find("#define al_sphere_ggx_ltc_matrix al_polygon_ggx_ltc_matrix") !=
+          std::string::npos);
+    const auto plan = library_samplers(variants);
+    REQUIRE(plan.size() == 6);
+    CHECK(plan[2].shares == 0);
+    CHECK(plan[3].shares == 1);
+    CHECK(plan[4].binding_offset == 2);
+    CHECK(plan[5].binding_offset == 3);
+
+    ScratchFolder dir("library_shared_tables");
+    std::string why;
+    REQUIRE(write_library_tables(variants, dir / "tables",
+                                 [&](const Diagnostic& d) { why += d.message; }));
+    std::ifstream in(dir / "tables/tables.json");
+    const auto manifest = nlohmann::json::parse(in);
+    const auto& tables = manifest.at("tables");
+    REQUIRE(tables.size() == 4);
+    CHECK(tables[0].at("also").at(0).at("sampler") == "al_sphere_ggx_ltc_matrix");
+    CHECK(tables[2].at("binding_offset") == 2);
+    CHECK_FALSE(tables[2].contains("also"));
+
+    dir.write("two.glsl", text);
+    const std::string shader =
+        "#version 450\n#include \"two.glsl\"\nlayout(local_size_x = 1) in;\n"
+        "layout(std430, binding = 7) buffer Out { vec4 o[]; };\n"
+        "void main() {\n    ArealightSurface s;\n"
+        "    s.p = vec3(0.0); s.n = vec3(0.0, 0.0, 1.0); s.v = vec3(0.0, 0.6, 0.8);\n"
+        "    s.param = 0.3; s.f0 = 1.0;\n"
+        "    ArealightShading r = arealight_sphere_ggx(s, vec3(0.0, 0.0, 2.0), 0.5);\n"
+        "    o[0] = vec4(r.diffuse, r.specular, 0.0, 0.0);\n}\n";
+    CompileOptions options;
+    options.includes = true;
+    options.include_dirs = {dir / ""};
+    const auto spirv = compile_glsl(shader, dir / "two.comp", options, [&](const Diagnostic& d) {
+        why += d.file + ":" + std::to_string(d.line) + ": " + d.message + "\n";
+    });
+    INFO(why);
+    CHECK(spirv);
 }
 
 }  // namespace arealight::test

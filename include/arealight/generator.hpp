@@ -30,6 +30,19 @@ struct LibraryOptions {
     std::map<std::string, std::string> measured;
 };
 
+// One table sampler of a library, in library order (each variant's samplers in turn):
+// the variant (index into the library's variants), the sampler as the family row spells
+// it, and its binding, AREALIGHT_BINDING + binding_offset. A sampler reading the same
+// table as an earlier one (sampler_table_id) is no declaration of its own: `shares` is
+// that entry's index (its binding_offset the same), else -1.
+struct LibrarySampler {
+    std::size_t variant = 0;
+    std::string sampler;
+    int binding_offset = 0;
+    int shares = -1;
+};
+std::vector<LibrarySampler> library_samplers(const std::vector<Variant>& variants);
+
 // The shading library of CONTRACT.md 5 for these variants: GLSL (no #version, no
 // entry point) or, for the CPU mirror, the same text as C++ over GLM. One public
 // function per variant, arealight_<light>_<dist>; every other name is moved into
@@ -49,11 +62,20 @@ std::string library_function_name(const Variant& v);
 // The macro that sets a sampler's binding ("AREALIGHT_POLYGON_GGX_LTC_MATRIX_BINDING"),
 // for a sampler name as the family row spells it.
 std::string sampler_binding_macro(const Variant& v, const std::string& sampler);
+// Which names library_rename moves: Prefixed, arealight's own (al_x, AL_X, AlX) and
+// the precision words, enough to keep variants apart (the C++ mirror); EveryName also
+// every other name but GLSL's own words, the contract's (CONTRACT.md 5) and
+// swizzle-shaped members (x, rgb, st), so that no renderer's macro can reach the
+// library's locals, parameters or struct members (the GLSL library).
+enum class RenameScope { Prefixed, EveryName };
 // Template text moved into the variant's namespace, as the library writes it:
 // al_x -> al_<light>_<dist>_x, AL_X -> AL_<LIGHT>_<DIST>_X, AlX -> Al<Light><Dist>X,
-// and the precision words (real, rvec3, ...) -> al_<light>_<dist>_real, ...;
-// comments and strings are kept.
-std::string library_rename(const std::string& text, const Variant& v);
+// the precision words (real, rvec3, ...) -> al_<light>_<dist>_real, ..., and with
+// EveryName any other name x -> al_<light>_<dist>_x; comments, strings and the
+// text of #line, #extension, #error, #pragma and #version lines are kept
+// (generator/library_rename.cpp).
+std::string library_rename(const std::string& text, const Variant& v,
+                           RenameScope scope = RenameScope::Prefixed);
 
 // Which results the validation kernel writes: Shading, the library function's
 // diffuse and specular (what a renderer pays for: timed and counted), or All, also

@@ -206,5 +206,9 @@ const VariantFamily* find_family(const Variant& v);
 // (VariantFamily::parts). Empty for a variant without a family.
 std::vector<std::string> variant_family_templates(const Variant& v);
 std::vector<std::string> variant_samplers(const Variant& v);
+// Which table a sampler of v reads: two samplers with the same id read byte-identical
+// data (runtime/variant_textures.cpp: the LTC tables depend on the distribution alone),
+// so a library declares and binds such a table once. "al_ltc_matrix/ggx".
+std::string sampler_table_id(const Variant& v, const std::string& sampler);
 
 }  // namespace arealight

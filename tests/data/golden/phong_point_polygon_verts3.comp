@@ -8,8 +8,8 @@
 // The shading library of CONTRACT.md 5: include it in any stage. Names outside
 // the contract's are prefixed al_<light>_<dist>_ (AL_..., Al...) so that they
 // cannot collide with a renderer's or another arealight library's.
-#ifndef AREALIGHT_LIBRARY_F2D50FB60A12FA3E
-#define AREALIGHT_LIBRARY_F2D50FB60A12FA3E 1
+#ifndef AREALIGHT_LIBRARY_47F2C9C3270CBA0C
+#define AREALIGHT_LIBRARY_47F2C9C3270CBA0C 1
 #extension GL_GOOGLE_cpp_style_line_directive : enable
 #extension GL_EXT_control_flow_attributes : enable
 #line 1 "templates/library_types.glsl"
@@ -43,9 +43,9 @@ struct ArealightShading {
 #endif
 #line 45 "arealight-generated"
 #define AL_POLYGON_PHONG_LANG_GLSL 1
-#define AL_POLYGON_PHONG_INOUT(T) inout T
+#define AL_POLYGON_PHONG_INOUT(al_polygon_phong_T) inout al_polygon_phong_T
 #define AL_POLYGON_PHONG_UNROLL [[unroll]]
-#define AL_POLYGON_PHONG_ARRAY_BEGIN(T, N) T[N](
+#define AL_POLYGON_PHONG_ARRAY_BEGIN(al_polygon_phong_T, al_polygon_phong_N) al_polygon_phong_T[al_polygon_phong_N](
 #define AL_POLYGON_PHONG_ARRAY_END )
 #define al_polygon_phong_hreal float
 #define al_polygon_phong_hvec2 vec2
@@ -91,227 +91,227 @@ struct AlPolygonPhongCase {
     al_polygon_phong_rvec4 n;
     al_polygon_phong_rvec4 v;
     al_polygon_phong_rvec4 r;
-    al_polygon_phong_rvec4 params;
-    al_polygon_phong_rvec4 center;
-    al_polygon_phong_rvec4 verts[AL_POLYGON_PHONG_CASE_VERTS];
+    al_polygon_phong_rvec4 al_polygon_phong_params;
+    al_polygon_phong_rvec4 al_polygon_phong_center;
+    al_polygon_phong_rvec4 al_polygon_phong_verts[AL_POLYGON_PHONG_CASE_VERTS];
 };
 
 // Odd series 2 w (1 + w^2/3 + w^4/5 + ...) = log((1 + w) / (1 - w)) for |w| <= 0.172.
 // Truncation: fp64 to w^21 (< 1e-18 relative), fp32 to w^11 (< 4e-10).
-al_polygon_phong_real al_polygon_phong_log_ratio_series(al_polygon_phong_real w) {
-    al_polygon_phong_real w2 = w * w;
+al_polygon_phong_real al_polygon_phong_log_ratio_series(al_polygon_phong_real al_polygon_phong_w) {
+    al_polygon_phong_real al_polygon_phong_w2 = al_polygon_phong_w * al_polygon_phong_w;
 #if AL_POLYGON_PHONG_PRECISION_FP64
-    al_polygon_phong_real s = 1.0f / 21.0f;
-    s = s * w2 + 1.0f / 19.0f;
-    s = s * w2 + 1.0f / 17.0f;
-    s = s * w2 + 1.0f / 15.0f;
-    s = s * w2 + 1.0f / 13.0f;
+    al_polygon_phong_real al_polygon_phong_s = 1.0f / 21.0f;
+    al_polygon_phong_s = al_polygon_phong_s * al_polygon_phong_w2 + 1.0f / 19.0f;
+    al_polygon_phong_s = al_polygon_phong_s * al_polygon_phong_w2 + 1.0f / 17.0f;
+    al_polygon_phong_s = al_polygon_phong_s * al_polygon_phong_w2 + 1.0f / 15.0f;
+    al_polygon_phong_s = al_polygon_phong_s * al_polygon_phong_w2 + 1.0f / 13.0f;
 #else
-    al_polygon_phong_real s = 1.0f / 13.0f;
+    al_polygon_phong_real al_polygon_phong_s = 1.0f / 13.0f;
 #endif
-    s = s * w2 + 1.0f / 11.0f;
-    s = s * w2 + 1.0f / 9.0f;
-    s = s * w2 + 1.0f / 7.0f;
-    s = s * w2 + 1.0f / 5.0f;
-    s = s * w2 + 1.0f / 3.0f;
-    s = s * w2 + al_polygon_phong_real(1);
-    return 2.0f * w * s;
+    al_polygon_phong_s = al_polygon_phong_s * al_polygon_phong_w2 + 1.0f / 11.0f;
+    al_polygon_phong_s = al_polygon_phong_s * al_polygon_phong_w2 + 1.0f / 9.0f;
+    al_polygon_phong_s = al_polygon_phong_s * al_polygon_phong_w2 + 1.0f / 7.0f;
+    al_polygon_phong_s = al_polygon_phong_s * al_polygon_phong_w2 + 1.0f / 5.0f;
+    al_polygon_phong_s = al_polygon_phong_s * al_polygon_phong_w2 + 1.0f / 3.0f;
+    al_polygon_phong_s = al_polygon_phong_s * al_polygon_phong_w2 + al_polygon_phong_real(1);
+    return 2.0f * al_polygon_phong_w * al_polygon_phong_s;
 }
 
 // atan(t) for |t| <= 1: argument reduction by pi/6 to |t| <= tan(pi/12), then the
 // odd Taylor series (truncation: fp64 to t^27, < 1e-18; fp32 to t^13, < 2e-10).
 // Relative error a few ulp, also for tiny t. Drivers' fp32 atan (lavapipe: 2e-5
 // relative) is not accurate enough, and GLSL has no fp64 atan.
-al_polygon_phong_real al_polygon_phong_atan_unit(al_polygon_phong_real t) {
-    al_polygon_phong_real a = abs(t), base = 0.0f;
-    const al_polygon_phong_real sqrt3 = 1.73205080756887729353f;
-    if (a > 0.26794919243112270647f) {
-        a = (a * sqrt3 - 1.0f) / (a + sqrt3);
-        base = 0.52359877559829887308f;
+al_polygon_phong_real al_polygon_phong_atan_unit(al_polygon_phong_real al_polygon_phong_t) {
+    al_polygon_phong_real al_polygon_phong_a = abs(al_polygon_phong_t), al_polygon_phong_base = 0.0f;
+    const al_polygon_phong_real al_polygon_phong_sqrt3 = 1.73205080756887729353f;
+    if (al_polygon_phong_a > 0.26794919243112270647f) {
+        al_polygon_phong_a = (al_polygon_phong_a * al_polygon_phong_sqrt3 - 1.0f) / (al_polygon_phong_a + al_polygon_phong_sqrt3);
+        al_polygon_phong_base = 0.52359877559829887308f;
     }
-    al_polygon_phong_real z = -a * a;
+    al_polygon_phong_real al_polygon_phong_z = -al_polygon_phong_a * al_polygon_phong_a;
 #if AL_POLYGON_PHONG_PRECISION_FP64
     al_polygon_phong_real p = 1.0f / 27.0f;
-    p = p * z + 1.0f / 25.0f;
-    p = p * z + 1.0f / 23.0f;
-    p = p * z + 1.0f / 21.0f;
-    p = p * z + 1.0f / 19.0f;
-    p = p * z + 1.0f / 17.0f;
-    p = p * z + 1.0f / 15.0f;
+    p = p * al_polygon_phong_z + 1.0f / 25.0f;
+    p = p * al_polygon_phong_z + 1.0f / 23.0f;
+    p = p * al_polygon_phong_z + 1.0f / 21.0f;
+    p = p * al_polygon_phong_z + 1.0f / 19.0f;
+    p = p * al_polygon_phong_z + 1.0f / 17.0f;
+    p = p * al_polygon_phong_z + 1.0f / 15.0f;
 #else
     al_polygon_phong_real p = 1.0f / 15.0f;
 #endif
-    p = p * z + 1.0f / 13.0f;
-    p = p * z + 1.0f / 11.0f;
-    p = p * z + 1.0f / 9.0f;
-    p = p * z + 1.0f / 7.0f;
-    p = p * z + 1.0f / 5.0f;
-    p = p * z + 1.0f / 3.0f;
-    p = p * z + al_polygon_phong_real(1);
-    p *= a;
-    return t < 0.0f ? -(base + p) : base + p;
+    p = p * al_polygon_phong_z + 1.0f / 13.0f;
+    p = p * al_polygon_phong_z + 1.0f / 11.0f;
+    p = p * al_polygon_phong_z + 1.0f / 9.0f;
+    p = p * al_polygon_phong_z + 1.0f / 7.0f;
+    p = p * al_polygon_phong_z + 1.0f / 5.0f;
+    p = p * al_polygon_phong_z + 1.0f / 3.0f;
+    p = p * al_polygon_phong_z + al_polygon_phong_real(1);
+    p *= al_polygon_phong_a;
+    return al_polygon_phong_t < 0.0f ? -(al_polygon_phong_base + p) : al_polygon_phong_base + p;
 }
 
 // atan2(y, x) in (-pi, pi], 0 for (0, 0). Error a few ulp (al_atan_unit). One
 // quotient and one series: SIMD drivers (lavapipe) would run both arms of a
 // conditional call.
-al_polygon_phong_real al_polygon_phong_atan2(al_polygon_phong_real y, al_polygon_phong_real x) {
-    al_polygon_phong_real ax = abs(x), ay = abs(y);
-    if (ax == 0.0f && ay == 0.0f) return 0.0f;
-    al_polygon_phong_real a = al_polygon_phong_atan_unit(min(ax, ay) / max(ax, ay));
-    al_polygon_phong_real r = ay <= ax ? a : AL_POLYGON_PHONG_HALF_PI - a;
-    if (x < 0.0f) r = AL_POLYGON_PHONG_PI - r;
-    return y < 0.0f ? -r : r;
+al_polygon_phong_real al_polygon_phong_atan2(al_polygon_phong_real al_polygon_phong_y, al_polygon_phong_real al_polygon_phong_x) {
+    al_polygon_phong_real al_polygon_phong_ax = abs(al_polygon_phong_x), al_polygon_phong_ay = abs(al_polygon_phong_y);
+    if (al_polygon_phong_ax == 0.0f && al_polygon_phong_ay == 0.0f) return 0.0f;
+    al_polygon_phong_real al_polygon_phong_a = al_polygon_phong_atan_unit(min(al_polygon_phong_ax, al_polygon_phong_ay) / max(al_polygon_phong_ax, al_polygon_phong_ay));
+    al_polygon_phong_real al_polygon_phong_r = al_polygon_phong_ay <= al_polygon_phong_ax ? al_polygon_phong_a : AL_POLYGON_PHONG_HALF_PI - al_polygon_phong_a;
+    if (al_polygon_phong_x < 0.0f) al_polygon_phong_r = AL_POLYGON_PHONG_PI - al_polygon_phong_r;
+    return al_polygon_phong_y < 0.0f ? -al_polygon_phong_r : al_polygon_phong_r;
 }
 
 // Natural log for x > 0: frexp reduction to m in [sqrt(1/2), sqrt(2)), then
 // log m = al_log_ratio_series((m - 1) / (m + 1)). Error a few ulp (lavapipe's fp32
 // log: 7e-6 relative; GLSL has no fp64 log).
-al_polygon_phong_real al_polygon_phong_log(al_polygon_phong_real x) {
-    int e;
-    al_polygon_phong_real m = frexp(x, e);
-    if (m < 0.70710678118654752440f) {
-        m *= 2.0f;
-        e -= 1;
+al_polygon_phong_real al_polygon_phong_log(al_polygon_phong_real al_polygon_phong_x) {
+    int al_polygon_phong_e;
+    al_polygon_phong_real al_polygon_phong_m = frexp(al_polygon_phong_x, al_polygon_phong_e);
+    if (al_polygon_phong_m < 0.70710678118654752440f) {
+        al_polygon_phong_m *= 2.0f;
+        al_polygon_phong_e -= 1;
     }
-    return al_polygon_phong_real(e) * 0.69314718055994530942f +
-           al_polygon_phong_log_ratio_series((m - 1.0f) / (m + 1.0f));
+    return al_polygon_phong_real(al_polygon_phong_e) * 0.69314718055994530942f +
+           al_polygon_phong_log_ratio_series((al_polygon_phong_m - 1.0f) / (al_polygon_phong_m + 1.0f));
 }
 
 // log(1 + z) for z in (-1, inf). Relative error ~1 ulp: for |z| < 1/4 the series in
 // z / (2 + z) (|w| <= 1/7) avoids the cancellation of log(1 + z).
-al_polygon_phong_real al_polygon_phong_log1p(al_polygon_phong_real z) {
-    if (abs(z) < 0.25f) return al_polygon_phong_log_ratio_series(z / (2.0f + z));
-    return al_polygon_phong_log(1.0f + z);
+al_polygon_phong_real al_polygon_phong_log1p(al_polygon_phong_real al_polygon_phong_z) {
+    if (abs(al_polygon_phong_z) < 0.25f) return al_polygon_phong_log_ratio_series(al_polygon_phong_z / (2.0f + al_polygon_phong_z));
+    return al_polygon_phong_log(1.0f + al_polygon_phong_z);
 }
 
 // exp(x), 0 below -745. fp32: the driver's (measured adequate). fp64 (GLSL has
 // none): x = k ln 2 + t, |t| <= ln2 / 2 with ln 2 split in two so t is exact to
 // rounding, Taylor to t^13 (truncation < 4e-18 relative), then ldexp.
-al_polygon_phong_real al_polygon_phong_exp(al_polygon_phong_real x) {
+al_polygon_phong_real al_polygon_phong_exp(al_polygon_phong_real al_polygon_phong_x) {
 #if AL_POLYGON_PHONG_PRECISION_FP64
-    if (x < -745.0f) return 0.0f;
-    x = min(x, 709.0f);
-    al_polygon_phong_real k = floor(x * 1.44269504088896340736f + 0.5f);
-    al_polygon_phong_real t = (x - k * 0.693145751953125f) - k * 1.42860682030941723212e-6f;
+    if (al_polygon_phong_x < -745.0f) return 0.0f;
+    al_polygon_phong_x = min(al_polygon_phong_x, 709.0f);
+    al_polygon_phong_real al_polygon_phong_k = floor(al_polygon_phong_x * 1.44269504088896340736f + 0.5f);
+    al_polygon_phong_real al_polygon_phong_t = (al_polygon_phong_x - al_polygon_phong_k * 0.693145751953125f) - al_polygon_phong_k * 1.42860682030941723212e-6f;
     al_polygon_phong_real p = 1.0f / 6227020800.0f;
-    p = p * t + 1.0f / 479001600.0f;
-    p = p * t + 1.0f / 39916800.0f;
-    p = p * t + 1.0f / 3628800.0f;
-    p = p * t + 1.0f / 362880.0f;
-    p = p * t + 1.0f / 40320.0f;
-    p = p * t + 1.0f / 5040.0f;
-    p = p * t + 1.0f / 720.0f;
-    p = p * t + 1.0f / 120.0f;
-    p = p * t + 1.0f / 24.0f;
-    p = p * t + 1.0f / 6.0f;
-    p = p * t + 0.5f;
-    p = p * t + 1.0f;
-    p = p * t + 1.0f;
-    return ldexp(p, int(k));
+    p = p * al_polygon_phong_t + 1.0f / 479001600.0f;
+    p = p * al_polygon_phong_t + 1.0f / 39916800.0f;
+    p = p * al_polygon_phong_t + 1.0f / 3628800.0f;
+    p = p * al_polygon_phong_t + 1.0f / 362880.0f;
+    p = p * al_polygon_phong_t + 1.0f / 40320.0f;
+    p = p * al_polygon_phong_t + 1.0f / 5040.0f;
+    p = p * al_polygon_phong_t + 1.0f / 720.0f;
+    p = p * al_polygon_phong_t + 1.0f / 120.0f;
+    p = p * al_polygon_phong_t + 1.0f / 24.0f;
+    p = p * al_polygon_phong_t + 1.0f / 6.0f;
+    p = p * al_polygon_phong_t + 0.5f;
+    p = p * al_polygon_phong_t + 1.0f;
+    p = p * al_polygon_phong_t + 1.0f;
+    return ldexp(p, int(al_polygon_phong_k));
 #else
-    return exp(x);
+    return exp(al_polygon_phong_x);
 #endif
 }
 
 // exp(z) - 1 for z <= 0 (used for 1 - x^k). Relative error a few ulp: Taylor for
 // |z| < 1/2 (fp64 to z^16, < 1e-18; fp32 to z^8, < 1e-9), exp(z) - 1 beyond,
 // where it cannot cancel.
-al_polygon_phong_real al_polygon_phong_expm1(al_polygon_phong_real z) {
-    if (abs(z) < 0.5f) {
+al_polygon_phong_real al_polygon_phong_expm1(al_polygon_phong_real al_polygon_phong_z) {
+    if (abs(al_polygon_phong_z) < 0.5f) {
 #if AL_POLYGON_PHONG_PRECISION_FP64
         al_polygon_phong_real p = 1.0f / 20922789888000.0f;
-        p = p * z + 1.0f / 1307674368000.0f;
-        p = p * z + 1.0f / 87178291200.0f;
-        p = p * z + 1.0f / 6227020800.0f;
-        p = p * z + 1.0f / 479001600.0f;
-        p = p * z + 1.0f / 39916800.0f;
-        p = p * z + 1.0f / 3628800.0f;
-        p = p * z + 1.0f / 362880.0f;
+        p = p * al_polygon_phong_z + 1.0f / 1307674368000.0f;
+        p = p * al_polygon_phong_z + 1.0f / 87178291200.0f;
+        p = p * al_polygon_phong_z + 1.0f / 6227020800.0f;
+        p = p * al_polygon_phong_z + 1.0f / 479001600.0f;
+        p = p * al_polygon_phong_z + 1.0f / 39916800.0f;
+        p = p * al_polygon_phong_z + 1.0f / 3628800.0f;
+        p = p * al_polygon_phong_z + 1.0f / 362880.0f;
 #else
         al_polygon_phong_real p = 1.0f / 362880.0f;
 #endif
-        p = p * z + 1.0f / 40320.0f;
-        p = p * z + 1.0f / 5040.0f;
-        p = p * z + 1.0f / 720.0f;
-        p = p * z + 1.0f / 120.0f;
-        p = p * z + 1.0f / 24.0f;
-        p = p * z + 1.0f / 6.0f;
-        p = p * z + 0.5f;
-        p = p * z + 1.0f;
-        return p * z;
+        p = p * al_polygon_phong_z + 1.0f / 40320.0f;
+        p = p * al_polygon_phong_z + 1.0f / 5040.0f;
+        p = p * al_polygon_phong_z + 1.0f / 720.0f;
+        p = p * al_polygon_phong_z + 1.0f / 120.0f;
+        p = p * al_polygon_phong_z + 1.0f / 24.0f;
+        p = p * al_polygon_phong_z + 1.0f / 6.0f;
+        p = p * al_polygon_phong_z + 0.5f;
+        p = p * al_polygon_phong_z + 1.0f;
+        return p * al_polygon_phong_z;
     }
-    return al_polygon_phong_exp(z) - 1.0f;
+    return al_polygon_phong_exp(al_polygon_phong_z) - 1.0f;
 }
 
 // (sin x, cos x) for |x| <= pi. fp32: the driver's. fp64 (GLSL has none): x = q pi/2
 // + t with |t| <= pi/4 (pi/2 split in two), Taylor to t^17 / t^18 (truncation
 // < 1e-19), quadrant by q.
-al_polygon_phong_rvec2 al_polygon_phong_sincos(al_polygon_phong_real x) {
+al_polygon_phong_rvec2 al_polygon_phong_sincos(al_polygon_phong_real al_polygon_phong_x) {
 #if AL_POLYGON_PHONG_PRECISION_FP64
-    al_polygon_phong_real q = floor(x * 0.63661977236758134308f + 0.5f);
-    al_polygon_phong_real t = (x - q * 1.57079632673412561417f) - q * 6.07710050650619224932e-11f;
-    al_polygon_phong_real z = t * t;
-    al_polygon_phong_real s = -1.0f / 355687428096000.0f;
-    s = s * z + 1.0f / 1307674368000.0f;
-    s = s * z - 1.0f / 6227020800.0f;
-    s = s * z + 1.0f / 39916800.0f;
-    s = s * z - 1.0f / 362880.0f;
-    s = s * z + 1.0f / 5040.0f;
-    s = s * z - 1.0f / 120.0f;
-    s = s * z + 1.0f / 6.0f;
-    s = t - t * z * s;
-    al_polygon_phong_real c = 1.0f / 6402373705728000.0f;
-    c = c * z - 1.0f / 20922789888000.0f;
-    c = c * z + 1.0f / 87178291200.0f;
-    c = c * z - 1.0f / 479001600.0f;
-    c = c * z + 1.0f / 3628800.0f;
-    c = c * z - 1.0f / 40320.0f;
-    c = c * z + 1.0f / 720.0f;
-    c = c * z - 1.0f / 24.0f;
-    c = c * z + 0.5f;
-    c = 1.0f - z * c;
-    int quadrant = int(q) & 3;
-    if (quadrant == 0) return al_polygon_phong_rvec2(s, c);
-    if (quadrant == 1) return al_polygon_phong_rvec2(c, -s);
-    if (quadrant == 2) return al_polygon_phong_rvec2(-s, -c);
-    return al_polygon_phong_rvec2(-c, s);
+    al_polygon_phong_real al_polygon_phong_q = floor(al_polygon_phong_x * 0.63661977236758134308f + 0.5f);
+    al_polygon_phong_real al_polygon_phong_t = (al_polygon_phong_x - al_polygon_phong_q * 1.57079632673412561417f) - al_polygon_phong_q * 6.07710050650619224932e-11f;
+    al_polygon_phong_real al_polygon_phong_z = al_polygon_phong_t * al_polygon_phong_t;
+    al_polygon_phong_real al_polygon_phong_s = -1.0f / 355687428096000.0f;
+    al_polygon_phong_s = al_polygon_phong_s * al_polygon_phong_z + 1.0f / 1307674368000.0f;
+    al_polygon_phong_s = al_polygon_phong_s * al_polygon_phong_z - 1.0f / 6227020800.0f;
+    al_polygon_phong_s = al_polygon_phong_s * al_polygon_phong_z + 1.0f / 39916800.0f;
+    al_polygon_phong_s = al_polygon_phong_s * al_polygon_phong_z - 1.0f / 362880.0f;
+    al_polygon_phong_s = al_polygon_phong_s * al_polygon_phong_z + 1.0f / 5040.0f;
+    al_polygon_phong_s = al_polygon_phong_s * al_polygon_phong_z - 1.0f / 120.0f;
+    al_polygon_phong_s = al_polygon_phong_s * al_polygon_phong_z + 1.0f / 6.0f;
+    al_polygon_phong_s = al_polygon_phong_t - al_polygon_phong_t * al_polygon_phong_z * al_polygon_phong_s;
+    al_polygon_phong_real al_polygon_phong_c = 1.0f / 6402373705728000.0f;
+    al_polygon_phong_c = al_polygon_phong_c * al_polygon_phong_z - 1.0f / 20922789888000.0f;
+    al_polygon_phong_c = al_polygon_phong_c * al_polygon_phong_z + 1.0f / 87178291200.0f;
+    al_polygon_phong_c = al_polygon_phong_c * al_polygon_phong_z - 1.0f / 479001600.0f;
+    al_polygon_phong_c = al_polygon_phong_c * al_polygon_phong_z + 1.0f / 3628800.0f;
+    al_polygon_phong_c = al_polygon_phong_c * al_polygon_phong_z - 1.0f / 40320.0f;
+    al_polygon_phong_c = al_polygon_phong_c * al_polygon_phong_z + 1.0f / 720.0f;
+    al_polygon_phong_c = al_polygon_phong_c * al_polygon_phong_z - 1.0f / 24.0f;
+    al_polygon_phong_c = al_polygon_phong_c * al_polygon_phong_z + 0.5f;
+    al_polygon_phong_c = 1.0f - al_polygon_phong_z * al_polygon_phong_c;
+    int al_polygon_phong_quadrant = int(al_polygon_phong_q) & 3;
+    if (al_polygon_phong_quadrant == 0) return al_polygon_phong_rvec2(al_polygon_phong_s, al_polygon_phong_c);
+    if (al_polygon_phong_quadrant == 1) return al_polygon_phong_rvec2(al_polygon_phong_c, -al_polygon_phong_s);
+    if (al_polygon_phong_quadrant == 2) return al_polygon_phong_rvec2(-al_polygon_phong_s, -al_polygon_phong_c);
+    return al_polygon_phong_rvec2(-al_polygon_phong_c, al_polygon_phong_s);
 #else
-    return al_polygon_phong_rvec2(sin(x), cos(x));
+    return al_polygon_phong_rvec2(sin(al_polygon_phong_x), cos(al_polygon_phong_x));
 #endif
 }
 
 // Orthonormal e1, e2 with (e1, e2, z) right-handed, for unit z (Duff et al. 2017,
 // "Building an orthonormal basis, revisited": branch-free, exact to rounding).
-void al_polygon_phong_tangent_frame(al_polygon_phong_rvec3 z, AL_POLYGON_PHONG_INOUT(al_polygon_phong_rvec3) e1, AL_POLYGON_PHONG_INOUT(al_polygon_phong_rvec3) e2) {
-    al_polygon_phong_real sgn = z.z >= 0.0f ? 1.0f : -1.0f;
-    al_polygon_phong_real a = -1.0f / (sgn + z.z);
-    al_polygon_phong_real b = z.x * z.y * a;
-    e1 = al_polygon_phong_rvec3(1.0f + sgn * z.x * z.x * a, sgn * b, -sgn * z.x);
-    e2 = al_polygon_phong_rvec3(b, sgn + z.y * z.y * a, -z.y);
+void al_polygon_phong_tangent_frame(al_polygon_phong_rvec3 al_polygon_phong_z, AL_POLYGON_PHONG_INOUT(al_polygon_phong_rvec3) al_polygon_phong_e1, AL_POLYGON_PHONG_INOUT(al_polygon_phong_rvec3) al_polygon_phong_e2) {
+    al_polygon_phong_real al_polygon_phong_sgn = al_polygon_phong_z.z >= 0.0f ? 1.0f : -1.0f;
+    al_polygon_phong_real al_polygon_phong_a = -1.0f / (al_polygon_phong_sgn + al_polygon_phong_z.z);
+    al_polygon_phong_real al_polygon_phong_b = al_polygon_phong_z.x * al_polygon_phong_z.y * al_polygon_phong_a;
+    al_polygon_phong_e1 = al_polygon_phong_rvec3(1.0f + al_polygon_phong_sgn * al_polygon_phong_z.x * al_polygon_phong_z.x * al_polygon_phong_a, al_polygon_phong_sgn * al_polygon_phong_b, -al_polygon_phong_sgn * al_polygon_phong_z.x);
+    al_polygon_phong_e2 = al_polygon_phong_rvec3(al_polygon_phong_b, al_polygon_phong_sgn + al_polygon_phong_z.y * al_polygon_phong_z.y * al_polygon_phong_a, -al_polygon_phong_z.y);
 }
 
 // Replaces NaN, infinities and negatives by 0: no bad value leaves a shader
 // (CONTRACT.md 2 asks for finite values >= 0 everywhere). Results are fp32 at any
 // precision: a value beyond the fp32 range is thus caught here too.
-float al_polygon_phong_clean(float x) { return (x >= 0.0f && x <= 3.0e38f) ? x : 0.0f; }
-vec4 al_polygon_phong_clean(vec4 x) { return vec4(al_polygon_phong_clean(x.x), al_polygon_phong_clean(x.y), al_polygon_phong_clean(x.z), al_polygon_phong_clean(x.w)); }
+float al_polygon_phong_clean(float al_polygon_phong_x) { return (al_polygon_phong_x >= 0.0f && al_polygon_phong_x <= 3.0e38f) ? al_polygon_phong_x : 0.0f; }
+vec4 al_polygon_phong_clean(vec4 al_polygon_phong_x) { return vec4(al_polygon_phong_clean(al_polygon_phong_x.x), al_polygon_phong_clean(al_polygon_phong_x.y), al_polygon_phong_clean(al_polygon_phong_x.z), al_polygon_phong_clean(al_polygon_phong_x.w)); }
 #line 300 "arealight-generated"
 #line 1 "templates/dist_phong.glsl"
 // Energy-conserving Phong, CONTRACT.md 2: f = (N+2)/(2 pi) (r.w)_+^N.
 
 // (r.w)_+^N for unit r, w and N in [1, 1e5]. Relative error ~N ulp of log(r.w),
 // from 1 - r.w = |r - w|^2 / 2 (no cancellation) and log1p.
-al_polygon_phong_real al_polygon_phong_phong_power(al_polygon_phong_rvec3 r, al_polygon_phong_rvec3 w, al_polygon_phong_real N) {
-    al_polygon_phong_real c = dot(r, w);
-    if (c <= 0.0f) return 0.0f;
-    al_polygon_phong_rvec3 d = r - w;
-    return al_polygon_phong_exp(N * al_polygon_phong_log1p(-0.5f * dot(d, d)));
+al_polygon_phong_real al_polygon_phong_phong_power(al_polygon_phong_rvec3 al_polygon_phong_r, al_polygon_phong_rvec3 al_polygon_phong_w, al_polygon_phong_real al_polygon_phong_N) {
+    al_polygon_phong_real al_polygon_phong_c = dot(al_polygon_phong_r, al_polygon_phong_w);
+    if (al_polygon_phong_c <= 0.0f) return 0.0f;
+    al_polygon_phong_rvec3 al_polygon_phong_d = al_polygon_phong_r - al_polygon_phong_w;
+    return al_polygon_phong_exp(al_polygon_phong_N * al_polygon_phong_log1p(-0.5f * dot(al_polygon_phong_d, al_polygon_phong_d)));
 }
 
 // The BRDF value itself (point evaluation, for the point-light baseline).
-al_polygon_phong_real al_polygon_phong_phong_brdf(al_polygon_phong_rvec3 r, al_polygon_phong_rvec3 w, al_polygon_phong_real N) {
-    return (N + 2.0f) / AL_POLYGON_PHONG_TWO_PI * al_polygon_phong_phong_power(r, w, N);
+al_polygon_phong_real al_polygon_phong_phong_brdf(al_polygon_phong_rvec3 al_polygon_phong_r, al_polygon_phong_rvec3 al_polygon_phong_w, al_polygon_phong_real al_polygon_phong_N) {
+    return (al_polygon_phong_N + 2.0f) / AL_POLYGON_PHONG_TWO_PI * al_polygon_phong_phong_power(al_polygon_phong_r, al_polygon_phong_w, al_polygon_phong_N);
 }
 #line 317 "arealight-generated"
 #line 1 "templates/point_light.glsl"
@@ -321,15 +321,15 @@ al_polygon_phong_real al_polygon_phong_phong_brdf(al_polygon_phong_rvec3 r, al_p
 // BRDF times the cosine at w, times omega. Domain: any unit w, omega >= 0. Error:
 // that of the point approximation, growing with the light's angular size.
 // Returns (diffuse, specular, 0, 0) (CONTRACT.md 2; no ndf or moment).
-vec4 al_polygon_phong_point_light(AlPolygonPhongCase c, al_polygon_phong_rvec3 n, al_polygon_phong_rvec3 w, al_polygon_phong_real solid_angle) {
-    al_polygon_phong_real nw = max(dot(n, w), 0.0f);
+vec4 al_polygon_phong_point_light(AlPolygonPhongCase al_polygon_phong_c, al_polygon_phong_rvec3 n, al_polygon_phong_rvec3 al_polygon_phong_w, al_polygon_phong_real al_polygon_phong_solid_angle) {
+    al_polygon_phong_real al_polygon_phong_nw = max(dot(n, al_polygon_phong_w), 0.0f);
 #ifdef AL_POLYGON_PHONG_DIST_PHONG
-    al_polygon_phong_real spec = al_polygon_phong_phong_brdf(al_polygon_phong_rvec3(c.r), w, al_polygon_phong_real(c.params.x)) * nw * solid_angle;
+    al_polygon_phong_real al_polygon_phong_spec = al_polygon_phong_phong_brdf(al_polygon_phong_rvec3(al_polygon_phong_c.r), al_polygon_phong_w, al_polygon_phong_real(al_polygon_phong_c.al_polygon_phong_params.x)) * al_polygon_phong_nw * al_polygon_phong_solid_angle;
 #else
-    al_polygon_phong_real spec = al_polygon_phong_microfacet_brdf_cos(n, al_polygon_phong_rvec3(c.v), w, al_polygon_phong_real(c.params.x), al_polygon_phong_real(c.params.w)) *
-                solid_angle;
+    al_polygon_phong_real al_polygon_phong_spec = al_polygon_phong_microfacet_brdf_cos(n, al_polygon_phong_rvec3(al_polygon_phong_c.v), al_polygon_phong_w, al_polygon_phong_real(al_polygon_phong_c.al_polygon_phong_params.x), al_polygon_phong_real(al_polygon_phong_c.al_polygon_phong_params.w)) *
+                al_polygon_phong_solid_angle;
 #endif
-    return vec4(nw / AL_POLYGON_PHONG_PI * solid_angle, spec, 0.0f, 0.0f);
+    return vec4(al_polygon_phong_nw / AL_POLYGON_PHONG_PI * al_polygon_phong_solid_angle, al_polygon_phong_spec, 0.0f, 0.0f);
 }
 #line 335 "arealight-generated"
 #line 1 "templates/polygon.glsl"
@@ -348,32 +348,32 @@ vec4 al_polygon_phong_point_light(AlPolygonPhongCase c, al_polygon_phong_rvec3 n
 
 // Which side of the light p (the origin) sees: +1 front, -1 back, 0 on its plane
 // or not emitting towards p (one-sided back face).
-al_polygon_phong_real al_polygon_phong_polygon_side(AlPolygonPhongCase c) {
-    al_polygon_phong_rvec3 d0 = al_polygon_phong_rvec3(c.verts[0]), d1 = al_polygon_phong_rvec3(c.verts[1]), d2 = al_polygon_phong_rvec3(c.verts[2]);
-    al_polygon_phong_real side = -dot(cross(d1 - d0, d2 - d0), al_polygon_phong_rvec3(c.center) + d0);
-    if (side == 0.0f) return 0.0f;
+al_polygon_phong_real al_polygon_phong_polygon_side(AlPolygonPhongCase al_polygon_phong_c) {
+    al_polygon_phong_rvec3 al_polygon_phong_d0 = al_polygon_phong_rvec3(al_polygon_phong_c.al_polygon_phong_verts[0]), al_polygon_phong_d1 = al_polygon_phong_rvec3(al_polygon_phong_c.al_polygon_phong_verts[1]), al_polygon_phong_d2 = al_polygon_phong_rvec3(al_polygon_phong_c.al_polygon_phong_verts[2]);
+    al_polygon_phong_real al_polygon_phong_side = -dot(cross(al_polygon_phong_d1 - al_polygon_phong_d0, al_polygon_phong_d2 - al_polygon_phong_d0), al_polygon_phong_rvec3(al_polygon_phong_c.al_polygon_phong_center) + al_polygon_phong_d0);
+    if (al_polygon_phong_side == 0.0f) return 0.0f;
 #if AL_POLYGON_PHONG_SIDED == 1
-    return side > 0.0f ? 1.0f : 0.0f;
+    return al_polygon_phong_side > 0.0f ? 1.0f : 0.0f;
 #elif AL_POLYGON_PHONG_SIDED == 2
-    return side > 0.0f ? 1.0f : -1.0f;
+    return al_polygon_phong_side > 0.0f ? 1.0f : -1.0f;
 #else
-    if (side > 0.0f) return 1.0f;
-    return c.params.y != 0.0f ? -1.0f : 0.0f;
+    if (al_polygon_phong_side > 0.0f) return 1.0f;
+    return al_polygon_phong_c.al_polygon_phong_params.y != 0.0f ? -1.0f : 0.0f;
 #endif
 }
 
 // Length of the arc a -> b with unit normal m, in [0, pi): atan2 of the sine along
 // the arc's own normal.
-al_polygon_phong_real al_polygon_phong_arc(al_polygon_phong_rvec3 a, al_polygon_phong_rvec3 b, al_polygon_phong_rvec3 m) {
-    return al_polygon_phong_atan2(dot(b, cross(m, a)), dot(a, b));
+al_polygon_phong_real al_polygon_phong_arc(al_polygon_phong_rvec3 al_polygon_phong_a, al_polygon_phong_rvec3 al_polygon_phong_b, al_polygon_phong_rvec3 al_polygon_phong_m) {
+    return al_polygon_phong_atan2(dot(al_polygon_phong_b, cross(al_polygon_phong_m, al_polygon_phong_a)), dot(al_polygon_phong_a, al_polygon_phong_b));
 }
 
 // The point where the arc a -> b crosses the great circle w.d = 0, from the signed
 // distances da = d.a, db = d.b of opposite signs: (da b - db a) / (da - db) lies on
 // both (da - db cannot cancel). One formula for every use, so that a crossing shared
 // by two arcs is the same value in both (the azimuth sweeps then telescope).
-al_polygon_phong_rvec3 al_polygon_phong_crossing(al_polygon_phong_rvec3 a, al_polygon_phong_rvec3 b, al_polygon_phong_real da, al_polygon_phong_real db) {
-    return normalize((da * b - db * a) / (da - db));
+al_polygon_phong_rvec3 al_polygon_phong_crossing(al_polygon_phong_rvec3 al_polygon_phong_a, al_polygon_phong_rvec3 al_polygon_phong_b, al_polygon_phong_real al_polygon_phong_da, al_polygon_phong_real al_polygon_phong_db) {
+    return normalize((al_polygon_phong_da * al_polygon_phong_b - al_polygon_phong_db * al_polygon_phong_a) / (al_polygon_phong_da - al_polygon_phong_db));
 }
 
 #if !defined(AL_POLYGON_PHONG_METHOD_POINT) && !defined(AL_POLYGON_PHONG_METHOD_LTC)
@@ -381,23 +381,23 @@ al_polygon_phong_rvec3 al_polygon_phong_crossing(al_polygon_phong_rvec3 a, al_po
 // where it re-enters), clipped by the axis's hemisphere unless !clip_axis: its ends
 // a, b, whether any of it is left, and where it leaves (yo) or re-enters (yi) the
 // axis's hemisphere, if it does.
-bool al_polygon_phong_horizon_arc(al_polygon_phong_rvec3 xn, al_polygon_phong_rvec3 en, al_polygon_phong_rvec3 axis, bool clip_axis, AL_POLYGON_PHONG_INOUT(al_polygon_phong_rvec3) a,
-                    AL_POLYGON_PHONG_INOUT(al_polygon_phong_rvec3) b, AL_POLYGON_PHONG_INOUT(al_polygon_phong_rvec3) yo, AL_POLYGON_PHONG_INOUT(bool) has_yo,
-                    AL_POLYGON_PHONG_INOUT(al_polygon_phong_rvec3) yi, AL_POLYGON_PHONG_INOUT(bool) has_yi) {
-    al_polygon_phong_real rx = dot(axis, xn), re = dot(axis, en);
-    bool jx = !clip_axis || rx >= 0.0f, je = !clip_axis || re >= 0.0f;
-    al_polygon_phong_rvec3 q = jx != je ? al_polygon_phong_crossing(xn, en, rx, re) : xn;
-    if (jx && !je) {
-        yo = q;
-        has_yo = true;
+bool al_polygon_phong_horizon_arc(al_polygon_phong_rvec3 al_polygon_phong_xn, al_polygon_phong_rvec3 al_polygon_phong_en, al_polygon_phong_rvec3 al_polygon_phong_axis, bool al_polygon_phong_clip_axis, AL_POLYGON_PHONG_INOUT(al_polygon_phong_rvec3) al_polygon_phong_a,
+                    AL_POLYGON_PHONG_INOUT(al_polygon_phong_rvec3) al_polygon_phong_b, AL_POLYGON_PHONG_INOUT(al_polygon_phong_rvec3) al_polygon_phong_yo, AL_POLYGON_PHONG_INOUT(bool) al_polygon_phong_has_yo,
+                    AL_POLYGON_PHONG_INOUT(al_polygon_phong_rvec3) al_polygon_phong_yi, AL_POLYGON_PHONG_INOUT(bool) al_polygon_phong_has_yi) {
+    al_polygon_phong_real al_polygon_phong_rx = dot(al_polygon_phong_axis, al_polygon_phong_xn), al_polygon_phong_re = dot(al_polygon_phong_axis, al_polygon_phong_en);
+    bool al_polygon_phong_jx = !al_polygon_phong_clip_axis || al_polygon_phong_rx >= 0.0f, al_polygon_phong_je = !al_polygon_phong_clip_axis || al_polygon_phong_re >= 0.0f;
+    al_polygon_phong_rvec3 al_polygon_phong_q = al_polygon_phong_jx != al_polygon_phong_je ? al_polygon_phong_crossing(al_polygon_phong_xn, al_polygon_phong_en, al_polygon_phong_rx, al_polygon_phong_re) : al_polygon_phong_xn;
+    if (al_polygon_phong_jx && !al_polygon_phong_je) {
+        al_polygon_phong_yo = al_polygon_phong_q;
+        al_polygon_phong_has_yo = true;
     }
-    if (!jx && je) {
-        yi = q;
-        has_yi = true;
+    if (!al_polygon_phong_jx && al_polygon_phong_je) {
+        al_polygon_phong_yi = al_polygon_phong_q;
+        al_polygon_phong_has_yi = true;
     }
-    a = jx ? xn : q;
-    b = je ? en : q;
-    return jx || je;
+    al_polygon_phong_a = al_polygon_phong_jx ? al_polygon_phong_xn : al_polygon_phong_q;
+    al_polygon_phong_b = al_polygon_phong_je ? al_polygon_phong_en : al_polygon_phong_q;
+    return al_polygon_phong_jx || al_polygon_phong_je;
 }
 
 // (Curved lights shaded along their true boundary have no polygon: AL_MAX_VERTS
@@ -414,90 +414,90 @@ bool al_polygon_phong_horizon_arc(al_polygon_phong_rvec3 xn, al_polygon_phong_rv
 // re-enters (clipped by the axis); iteration count+1 the arc along the axis's
 // circle between D's exit and entry points. All in one rolled loop, so the
 // method's per-arc code appears once.
-al_polygon_phong_real al_polygon_phong_polygon_stream(AlPolygonPhongCase c, al_polygon_phong_real side, al_polygon_phong_rvec3 n, al_polygon_phong_rvec3 axis, bool clip_axis, al_polygon_phong_real N,
-                       AL_POLYGON_PHONG_INOUT(AlPolygonPhongMoments) M) {
-    int count = int(c.params.z);
-    al_polygon_phong_rvec3 center = al_polygon_phong_rvec3(c.center);
-    al_polygon_phong_real lit_sum = 0.0f;
-    al_polygon_phong_rvec3 xn = al_polygon_phong_rvec3(0.0f), en = al_polygon_phong_rvec3(0.0f);  // leaves / re-enters n's hemisphere
-    al_polygon_phong_rvec3 yo = al_polygon_phong_rvec3(0.0f), yi = al_polygon_phong_rvec3(0.0f);  // leaves / re-enters the axis's, on D
-    bool has_xn = false, has_en = false, has_yo = false, has_yi = false;
-    for (int i = 0; i < AL_POLYGON_PHONG_MAX_VERTS + 2; ++i) {
-        if (i >= count + 2) break;
-        al_polygon_phong_rvec3 a, b, m;
-        bool d_arc = false;
-        if (i < count) {
+al_polygon_phong_real al_polygon_phong_polygon_stream(AlPolygonPhongCase al_polygon_phong_c, al_polygon_phong_real al_polygon_phong_side, al_polygon_phong_rvec3 n, al_polygon_phong_rvec3 al_polygon_phong_axis, bool al_polygon_phong_clip_axis, al_polygon_phong_real al_polygon_phong_N,
+                       AL_POLYGON_PHONG_INOUT(AlPolygonPhongMoments) al_polygon_phong_M) {
+    int al_polygon_phong_count = int(al_polygon_phong_c.al_polygon_phong_params.z);
+    al_polygon_phong_rvec3 al_polygon_phong_center = al_polygon_phong_rvec3(al_polygon_phong_c.al_polygon_phong_center);
+    al_polygon_phong_real al_polygon_phong_lit_sum = 0.0f;
+    al_polygon_phong_rvec3 al_polygon_phong_xn = al_polygon_phong_rvec3(0.0f), al_polygon_phong_en = al_polygon_phong_rvec3(0.0f);  // leaves / re-enters n's hemisphere
+    al_polygon_phong_rvec3 al_polygon_phong_yo = al_polygon_phong_rvec3(0.0f), al_polygon_phong_yi = al_polygon_phong_rvec3(0.0f);  // leaves / re-enters the axis's, on D
+    bool al_polygon_phong_has_xn = false, al_polygon_phong_has_en = false, al_polygon_phong_has_yo = false, al_polygon_phong_has_yi = false;
+    for (int al_polygon_phong_i = 0; al_polygon_phong_i < AL_POLYGON_PHONG_MAX_VERTS + 2; ++al_polygon_phong_i) {
+        if (al_polygon_phong_i >= al_polygon_phong_count + 2) break;
+        al_polygon_phong_rvec3 al_polygon_phong_a, al_polygon_phong_b, al_polygon_phong_m;
+        bool al_polygon_phong_d_arc = false;
+        if (al_polygon_phong_i < al_polygon_phong_count) {
             // Seen from the front the contract's counter-clockwise order is clockwise
             // from outside the sphere: walk each edge backwards. The normal comes from
             // x_p x (x_q - x_p), the edge vector taken from the offsets.
-            int j = i + 1 < count ? i + 1 : 0;
-            int p = side > 0.0f ? j : i, q = side > 0.0f ? i : j;
-            al_polygon_phong_rvec3 dp = al_polygon_phong_rvec3(c.verts[p]), dq = al_polygon_phong_rvec3(c.verts[q]);
-            a = normalize(center + dp);
-            b = normalize(center + dq);
-            m = normalize(cross(center + dp, dq - dp));
-            al_polygon_phong_real na = dot(n, a), nb = dot(n, b), ra = dot(axis, a), rb = dot(axis, b);
-            bool ia = na >= 0.0f, ib = nb >= 0.0f;
-            bool ja = !clip_axis || ra >= 0.0f, jb = !clip_axis || rb >= 0.0f;
-            al_polygon_phong_rvec3 pn = ia != ib ? al_polygon_phong_crossing(a, b, na, nb) : a;
-            al_polygon_phong_rvec3 pr = ja != jb ? al_polygon_phong_crossing(a, b, ra, rb) : a;
+            int al_polygon_phong_j = al_polygon_phong_i + 1 < al_polygon_phong_count ? al_polygon_phong_i + 1 : 0;
+            int p = al_polygon_phong_side > 0.0f ? al_polygon_phong_j : al_polygon_phong_i, al_polygon_phong_q = al_polygon_phong_side > 0.0f ? al_polygon_phong_i : al_polygon_phong_j;
+            al_polygon_phong_rvec3 al_polygon_phong_dp = al_polygon_phong_rvec3(al_polygon_phong_c.al_polygon_phong_verts[p]), al_polygon_phong_dq = al_polygon_phong_rvec3(al_polygon_phong_c.al_polygon_phong_verts[al_polygon_phong_q]);
+            al_polygon_phong_a = normalize(al_polygon_phong_center + al_polygon_phong_dp);
+            al_polygon_phong_b = normalize(al_polygon_phong_center + al_polygon_phong_dq);
+            al_polygon_phong_m = normalize(cross(al_polygon_phong_center + al_polygon_phong_dp, al_polygon_phong_dq - al_polygon_phong_dp));
+            al_polygon_phong_real al_polygon_phong_na = dot(n, al_polygon_phong_a), al_polygon_phong_nb = dot(n, al_polygon_phong_b), al_polygon_phong_ra = dot(al_polygon_phong_axis, al_polygon_phong_a), al_polygon_phong_rb = dot(al_polygon_phong_axis, al_polygon_phong_b);
+            bool al_polygon_phong_ia = al_polygon_phong_na >= 0.0f, al_polygon_phong_ib = al_polygon_phong_nb >= 0.0f;
+            bool al_polygon_phong_ja = !al_polygon_phong_clip_axis || al_polygon_phong_ra >= 0.0f, al_polygon_phong_jb = !al_polygon_phong_clip_axis || al_polygon_phong_rb >= 0.0f;
+            al_polygon_phong_rvec3 al_polygon_phong_pn = al_polygon_phong_ia != al_polygon_phong_ib ? al_polygon_phong_crossing(al_polygon_phong_a, al_polygon_phong_b, al_polygon_phong_na, al_polygon_phong_nb) : al_polygon_phong_a;
+            al_polygon_phong_rvec3 al_polygon_phong_pr = al_polygon_phong_ja != al_polygon_phong_jb ? al_polygon_phong_crossing(al_polygon_phong_a, al_polygon_phong_b, al_polygon_phong_ra, al_polygon_phong_rb) : al_polygon_phong_a;
             // Lit part (diffuse): the edge clipped to n's hemisphere.
-            if (ia || ib) lit_sum += al_polygon_phong_arc(ia ? a : pn, ib ? b : pn, m) * dot(n, m);
-            if (ia && !ib) {
-                xn = pn;
-                has_xn = true;
+            if (al_polygon_phong_ia || al_polygon_phong_ib) al_polygon_phong_lit_sum += al_polygon_phong_arc(al_polygon_phong_ia ? al_polygon_phong_a : al_polygon_phong_pn, al_polygon_phong_ib ? al_polygon_phong_b : al_polygon_phong_pn, al_polygon_phong_m) * dot(n, al_polygon_phong_m);
+            if (al_polygon_phong_ia && !al_polygon_phong_ib) {
+                al_polygon_phong_xn = al_polygon_phong_pn;
+                al_polygon_phong_has_xn = true;
             }
-            if (!ia && ib) {
-                en = pn;
-                has_en = true;
+            if (!al_polygon_phong_ia && al_polygon_phong_ib) {
+                al_polygon_phong_en = al_polygon_phong_pn;
+                al_polygon_phong_has_en = true;
             }
             // The axis's circle crosses D's boundary here only inside n's hemisphere.
-            bool pr_lit = dot(n, pr) >= 0.0f;
-            if (ja && !jb && pr_lit) {
-                yo = pr;
-                has_yo = true;
+            bool al_polygon_phong_pr_lit = dot(n, al_polygon_phong_pr) >= 0.0f;
+            if (al_polygon_phong_ja && !al_polygon_phong_jb && al_polygon_phong_pr_lit) {
+                al_polygon_phong_yo = al_polygon_phong_pr;
+                al_polygon_phong_has_yo = true;
             }
-            if (!ja && jb && pr_lit) {
-                yi = pr;
-                has_yi = true;
+            if (!al_polygon_phong_ja && al_polygon_phong_jb && al_polygon_phong_pr_lit) {
+                al_polygon_phong_yi = al_polygon_phong_pr;
+                al_polygon_phong_has_yi = true;
             }
             // D's part: the parameter interval of (1-t) a + t b inside both.
-            al_polygon_phong_real tn = ia != ib ? na / (na - nb) : 0.0f;
-            al_polygon_phong_real tr = ja != jb ? ra / (ra - rb) : 0.0f;
-            al_polygon_phong_real t0 = max(ia ? 0.0f : tn, ja ? 0.0f : tr);
-            al_polygon_phong_real t1 = min(ib ? 1.0f : tn, jb ? 1.0f : tr);
-            d_arc = (ia || ib) && (ja || jb) && t0 < t1;
-            al_polygon_phong_rvec3 a0 = ia && ja ? a : (!ja && (ia || tr >= tn) ? pr : pn);
-            al_polygon_phong_rvec3 b0 = ib && jb ? b : (!jb && (ib || tr <= tn) ? pr : pn);
-            a = a0;
-            b = b0;
-        } else if (i == count) {
+            al_polygon_phong_real al_polygon_phong_tn = al_polygon_phong_ia != al_polygon_phong_ib ? al_polygon_phong_na / (al_polygon_phong_na - al_polygon_phong_nb) : 0.0f;
+            al_polygon_phong_real al_polygon_phong_tr = al_polygon_phong_ja != al_polygon_phong_jb ? al_polygon_phong_ra / (al_polygon_phong_ra - al_polygon_phong_rb) : 0.0f;
+            al_polygon_phong_real al_polygon_phong_t0 = max(al_polygon_phong_ia ? 0.0f : al_polygon_phong_tn, al_polygon_phong_ja ? 0.0f : al_polygon_phong_tr);
+            al_polygon_phong_real al_polygon_phong_t1 = min(al_polygon_phong_ib ? 1.0f : al_polygon_phong_tn, al_polygon_phong_jb ? 1.0f : al_polygon_phong_tr);
+            al_polygon_phong_d_arc = (al_polygon_phong_ia || al_polygon_phong_ib) && (al_polygon_phong_ja || al_polygon_phong_jb) && al_polygon_phong_t0 < al_polygon_phong_t1;
+            al_polygon_phong_rvec3 al_polygon_phong_a0 = al_polygon_phong_ia && al_polygon_phong_ja ? al_polygon_phong_a : (!al_polygon_phong_ja && (al_polygon_phong_ia || al_polygon_phong_tr >= al_polygon_phong_tn) ? al_polygon_phong_pr : al_polygon_phong_pn);
+            al_polygon_phong_rvec3 al_polygon_phong_b0 = al_polygon_phong_ib && al_polygon_phong_jb ? al_polygon_phong_b : (!al_polygon_phong_jb && (al_polygon_phong_ib || al_polygon_phong_tr <= al_polygon_phong_tn) ? al_polygon_phong_pr : al_polygon_phong_pn);
+            al_polygon_phong_a = al_polygon_phong_a0;
+            al_polygon_phong_b = al_polygon_phong_b0;
+        } else if (al_polygon_phong_i == al_polygon_phong_count) {
             // Along n's circle (normal n), clipped by the axis.
-            m = n;
-            if (has_xn && has_en) {
-                lit_sum += al_polygon_phong_arc(xn, en, n);
-                d_arc = al_polygon_phong_horizon_arc(xn, en, axis, clip_axis, a, b, yo, has_yo, yi, has_yi);
+            al_polygon_phong_m = n;
+            if (al_polygon_phong_has_xn && al_polygon_phong_has_en) {
+                al_polygon_phong_lit_sum += al_polygon_phong_arc(al_polygon_phong_xn, al_polygon_phong_en, n);
+                al_polygon_phong_d_arc = al_polygon_phong_horizon_arc(al_polygon_phong_xn, al_polygon_phong_en, al_polygon_phong_axis, al_polygon_phong_clip_axis, al_polygon_phong_a, al_polygon_phong_b, al_polygon_phong_yo, al_polygon_phong_has_yo, al_polygon_phong_yi, al_polygon_phong_has_yi);
             }
         } else {
             // Along the axis's circle (normal axis), from D's exit to its entry.
-            m = axis;
-            d_arc = has_yo && has_yi;
-            a = yo;
-            b = yi;
+            al_polygon_phong_m = al_polygon_phong_axis;
+            al_polygon_phong_d_arc = al_polygon_phong_has_yo && al_polygon_phong_has_yi;
+            al_polygon_phong_a = al_polygon_phong_yo;
+            al_polygon_phong_b = al_polygon_phong_yi;
         }
-        if (d_arc) al_polygon_phong_moments_arc(M, a, b, m, axis, n, N);
+        if (al_polygon_phong_d_arc) al_polygon_phong_moments_arc(al_polygon_phong_M, al_polygon_phong_a, al_polygon_phong_b, al_polygon_phong_m, al_polygon_phong_axis, n, al_polygon_phong_N);
     }
-    return lit_sum / AL_POLYGON_PHONG_TWO_PI;
+    return al_polygon_phong_lit_sum / AL_POLYGON_PHONG_TWO_PI;
 }
 
 #if defined(AL_POLYGON_PHONG_DIST_PHONG) && !defined(AL_POLYGON_PHONG_METHOD_MRP)
 // The Phong moments about `axis` over D (al_moments_end), and D's diffuse (every Phong
 // accumulator but mrp's vector form factor, which has no lobe).
-al_polygon_phong_rvec2 al_polygon_phong_polygon_moments(AlPolygonPhongCase c, al_polygon_phong_real side, al_polygon_phong_rvec3 n, al_polygon_phong_rvec3 axis, al_polygon_phong_real N,
+al_polygon_phong_rvec2 al_polygon_phong_polygon_moments(AlPolygonPhongCase al_polygon_phong_c, al_polygon_phong_real al_polygon_phong_side, al_polygon_phong_rvec3 n, al_polygon_phong_rvec3 al_polygon_phong_axis, al_polygon_phong_real al_polygon_phong_N,
                          AL_POLYGON_PHONG_INOUT(al_polygon_phong_real) diffuse) {
-    AlPolygonPhongMoments M = al_polygon_phong_moments_begin(axis);
-    diffuse = al_polygon_phong_polygon_stream(c, side, n, axis, true, N, M);
-    return al_polygon_phong_moments_end(M, axis, n, N);
+    AlPolygonPhongMoments al_polygon_phong_M = al_polygon_phong_moments_begin(al_polygon_phong_axis);
+    diffuse = al_polygon_phong_polygon_stream(al_polygon_phong_c, al_polygon_phong_side, n, al_polygon_phong_axis, true, al_polygon_phong_N, al_polygon_phong_M);
+    return al_polygon_phong_moments_end(al_polygon_phong_M, al_polygon_phong_axis, n, al_polygon_phong_N);
 }
 #endif
 #endif
@@ -511,22 +511,22 @@ al_polygon_phong_rvec2 al_polygon_phong_polygon_moments(AlPolygonPhongCase c, al
 // Baseline: the polygon's centre as a point light of the same power, solid angle
 // ~ area cos(theta_l) / d^2 (point_light.glsl). Error grows with the light's angular
 // size; O(1), cheapest.
-vec4 al_polygon_phong_shade(AlPolygonPhongCase c) {
-    al_polygon_phong_rvec3 n = al_polygon_phong_rvec3(c.n);
-    al_polygon_phong_real side = al_polygon_phong_polygon_side(c);
-    if (side == 0.0f) return vec4(0.0f);
-    int count = int(c.params.z);
-    al_polygon_phong_rvec3 area2 = al_polygon_phong_rvec3(0.0f);
-    al_polygon_phong_rvec3 d0 = al_polygon_phong_rvec3(c.verts[0]);
-    for (int i = 2; i < AL_POLYGON_PHONG_MAX_VERTS; ++i) {
-        if (i >= count) break;
-        area2 += cross(al_polygon_phong_rvec3(c.verts[i - 1]) - d0, al_polygon_phong_rvec3(c.verts[i]) - d0);
+vec4 al_polygon_phong_shade(AlPolygonPhongCase al_polygon_phong_c) {
+    al_polygon_phong_rvec3 n = al_polygon_phong_rvec3(al_polygon_phong_c.n);
+    al_polygon_phong_real al_polygon_phong_side = al_polygon_phong_polygon_side(al_polygon_phong_c);
+    if (al_polygon_phong_side == 0.0f) return vec4(0.0f);
+    int al_polygon_phong_count = int(al_polygon_phong_c.al_polygon_phong_params.z);
+    al_polygon_phong_rvec3 al_polygon_phong_area2 = al_polygon_phong_rvec3(0.0f);
+    al_polygon_phong_rvec3 al_polygon_phong_d0 = al_polygon_phong_rvec3(al_polygon_phong_c.al_polygon_phong_verts[0]);
+    for (int al_polygon_phong_i = 2; al_polygon_phong_i < AL_POLYGON_PHONG_MAX_VERTS; ++al_polygon_phong_i) {
+        if (al_polygon_phong_i >= al_polygon_phong_count) break;
+        al_polygon_phong_area2 += cross(al_polygon_phong_rvec3(al_polygon_phong_c.al_polygon_phong_verts[al_polygon_phong_i - 1]) - al_polygon_phong_d0, al_polygon_phong_rvec3(al_polygon_phong_c.al_polygon_phong_verts[al_polygon_phong_i]) - al_polygon_phong_d0);
     }
-    al_polygon_phong_rvec3 centre = al_polygon_phong_rvec3(c.center);
-    al_polygon_phong_real d2 = dot(centre, centre);
-    al_polygon_phong_rvec3 w = centre * inversesqrt(d2);
-    al_polygon_phong_real solid_angle = abs(dot(area2, w)) * 0.5f / d2;
-    return al_polygon_phong_point_light(c, n, w, solid_angle);
+    al_polygon_phong_rvec3 al_polygon_phong_centre = al_polygon_phong_rvec3(al_polygon_phong_c.al_polygon_phong_center);
+    al_polygon_phong_real al_polygon_phong_d2 = dot(al_polygon_phong_centre, al_polygon_phong_centre);
+    al_polygon_phong_rvec3 al_polygon_phong_w = al_polygon_phong_centre * inversesqrt(al_polygon_phong_d2);
+    al_polygon_phong_real al_polygon_phong_solid_angle = abs(dot(al_polygon_phong_area2, al_polygon_phong_w)) * 0.5f / al_polygon_phong_d2;
+    return al_polygon_phong_point_light(al_polygon_phong_c, n, al_polygon_phong_w, al_polygon_phong_solid_angle);
 }
 #endif
 
@@ -534,37 +534,37 @@ vec4 al_polygon_phong_shade(AlPolygonPhongCase c) {
 // Whether the mirror direction r lies in the light's solid angle, or within
 // 1e-5 rad of its boundary: the inward normals of the unclipped edges, oriented
 // as polygon.glsl walks them.
-bool al_polygon_phong_polygon_holds(AlPolygonPhongCase c, al_polygon_phong_real side, al_polygon_phong_rvec3 r) {
-    int count = int(c.params.z);
-    al_polygon_phong_rvec3 center = al_polygon_phong_rvec3(c.center);
-    bool inside = true;
-    for (int i = 0; i < AL_POLYGON_PHONG_MAX_VERTS; ++i) {
-        if (i >= count) break;
-        int j = i + 1 < count ? i + 1 : 0;
-        int p = side > 0.0f ? j : i, q = side > 0.0f ? i : j;
-        al_polygon_phong_rvec3 dp = al_polygon_phong_rvec3(c.verts[p]), dq = al_polygon_phong_rvec3(c.verts[q]);
-        al_polygon_phong_rvec3 m = normalize(cross(center + dp, dq - dp));
-        inside = inside && dot(r, m) >= -1e-5f;
+bool al_polygon_phong_polygon_holds(AlPolygonPhongCase al_polygon_phong_c, al_polygon_phong_real al_polygon_phong_side, al_polygon_phong_rvec3 al_polygon_phong_r) {
+    int al_polygon_phong_count = int(al_polygon_phong_c.al_polygon_phong_params.z);
+    al_polygon_phong_rvec3 al_polygon_phong_center = al_polygon_phong_rvec3(al_polygon_phong_c.al_polygon_phong_center);
+    bool al_polygon_phong_inside = true;
+    for (int al_polygon_phong_i = 0; al_polygon_phong_i < AL_POLYGON_PHONG_MAX_VERTS; ++al_polygon_phong_i) {
+        if (al_polygon_phong_i >= al_polygon_phong_count) break;
+        int al_polygon_phong_j = al_polygon_phong_i + 1 < al_polygon_phong_count ? al_polygon_phong_i + 1 : 0;
+        int p = al_polygon_phong_side > 0.0f ? al_polygon_phong_j : al_polygon_phong_i, al_polygon_phong_q = al_polygon_phong_side > 0.0f ? al_polygon_phong_i : al_polygon_phong_j;
+        al_polygon_phong_rvec3 al_polygon_phong_dp = al_polygon_phong_rvec3(al_polygon_phong_c.al_polygon_phong_verts[p]), al_polygon_phong_dq = al_polygon_phong_rvec3(al_polygon_phong_c.al_polygon_phong_verts[al_polygon_phong_q]);
+        al_polygon_phong_rvec3 al_polygon_phong_m = normalize(cross(al_polygon_phong_center + al_polygon_phong_dp, al_polygon_phong_dq - al_polygon_phong_dp));
+        al_polygon_phong_inside = al_polygon_phong_inside && dot(al_polygon_phong_r, al_polygon_phong_m) >= -1e-5f;
     }
-    return inside;
+    return al_polygon_phong_inside;
 }
 
 // Diffuse, specular and ndf (CONTRACT.md 2) for a microfacet distribution: the
 // lit region (light clipped to the horizon of n, never to a lobe's hemisphere)
 // streamed into the half-vector accumulator.
-vec4 al_polygon_phong_shade(AlPolygonPhongCase c) {
-    al_polygon_phong_rvec3 n = normalize(al_polygon_phong_rvec3(c.n));
-    al_polygon_phong_rvec3 v = normalize(al_polygon_phong_rvec3(c.v));
-    al_polygon_phong_real side = al_polygon_phong_polygon_side(c);
-    if (side == 0.0f) return vec4(0.0f);
-    al_polygon_phong_real nv = dot(n, v);
-    al_polygon_phong_real param = al_polygon_phong_real(c.params.x);
-    al_polygon_phong_rvec3 r = normalize(al_polygon_phong_rvec3(c.r));
-    bool direct = nv > 0.0f && al_polygon_phong_polygon_holds(c, side, r);
-    AlPolygonPhongMoments M = al_polygon_phong_mf_begin(n, v, r, param, al_polygon_phong_real(c.params.w), direct);
-    al_polygon_phong_real diffuse = al_polygon_phong_polygon_stream(c, side, n, n, false, param, M);
-    al_polygon_phong_rvec2 sn = al_polygon_phong_mf_end(M);
-    return vec4(diffuse, sn.x, sn.y, 0.0f);
+vec4 al_polygon_phong_shade(AlPolygonPhongCase al_polygon_phong_c) {
+    al_polygon_phong_rvec3 n = normalize(al_polygon_phong_rvec3(al_polygon_phong_c.n));
+    al_polygon_phong_rvec3 v = normalize(al_polygon_phong_rvec3(al_polygon_phong_c.v));
+    al_polygon_phong_real al_polygon_phong_side = al_polygon_phong_polygon_side(al_polygon_phong_c);
+    if (al_polygon_phong_side == 0.0f) return vec4(0.0f);
+    al_polygon_phong_real al_polygon_phong_nv = dot(n, v);
+    al_polygon_phong_real param = al_polygon_phong_real(al_polygon_phong_c.al_polygon_phong_params.x);
+    al_polygon_phong_rvec3 al_polygon_phong_r = normalize(al_polygon_phong_rvec3(al_polygon_phong_c.r));
+    bool al_polygon_phong_direct = al_polygon_phong_nv > 0.0f && al_polygon_phong_polygon_holds(al_polygon_phong_c, al_polygon_phong_side, al_polygon_phong_r);
+    AlPolygonPhongMoments al_polygon_phong_M = al_polygon_phong_mf_begin(n, v, al_polygon_phong_r, param, al_polygon_phong_real(al_polygon_phong_c.al_polygon_phong_params.w), al_polygon_phong_direct);
+    al_polygon_phong_real diffuse = al_polygon_phong_polygon_stream(al_polygon_phong_c, al_polygon_phong_side, n, n, false, param, al_polygon_phong_M);
+    al_polygon_phong_rvec2 al_polygon_phong_sn = al_polygon_phong_mf_end(al_polygon_phong_M);
+    return vec4(diffuse, al_polygon_phong_sn.x, al_polygon_phong_sn.y, 0.0f);
 }
 #endif
 
@@ -578,26 +578,26 @@ vec4 al_polygon_phong_shade(AlPolygonPhongCase c) {
 // [1, 1e5] (lambda_p <= ln 2 has no half width: lobes nearly opposite). Costs a
 // second clip and boundary pass about r_p. Error: the lobe-shape mismatch, largest
 // for low N and r far from n (README, arealight report).
-al_polygon_phong_real al_polygon_phong_specular_sg(AlPolygonPhongCase c, al_polygon_phong_real side, al_polygon_phong_rvec3 r, al_polygon_phong_rvec3 n, al_polygon_phong_real N) {
-    const al_polygon_phong_real ln2 = 0.69314718055994530942f;
-    al_polygon_phong_real l1 = ln2 / -al_polygon_phong_expm1(-ln2 / N);
-    al_polygon_phong_real l2 = 2.0f * ln2;  // n = 1
-    al_polygon_phong_rvec3 pm = (l1 * r + l2 * n) / (l1 + l2);
-    al_polygon_phong_real len = length(pm);
-    if (!(len > 1e-6f)) return 0.0f;
-    al_polygon_phong_rvec3 rp = pm / len;
-    al_polygon_phong_real lp = (l1 + l2) * len;
-    al_polygon_phong_real np = lp > 1.0001f * ln2 ? -ln2 / al_polygon_phong_log1p(-ln2 / lp) : 1e5f;
-    np = clamp(np, 1.0f, 1e5f);
-    al_polygon_phong_real rr = dot(r, rp), nr = dot(n, rp);
-    if (!(rr > 0.0f) || !(nr > 0.0f)) return 0.0f;
+al_polygon_phong_real al_polygon_phong_specular_sg(AlPolygonPhongCase al_polygon_phong_c, al_polygon_phong_real al_polygon_phong_side, al_polygon_phong_rvec3 al_polygon_phong_r, al_polygon_phong_rvec3 n, al_polygon_phong_real al_polygon_phong_N) {
+    const al_polygon_phong_real al_polygon_phong_ln2 = 0.69314718055994530942f;
+    al_polygon_phong_real al_polygon_phong_l1 = al_polygon_phong_ln2 / -al_polygon_phong_expm1(-al_polygon_phong_ln2 / al_polygon_phong_N);
+    al_polygon_phong_real al_polygon_phong_l2 = 2.0f * al_polygon_phong_ln2;  // n = 1
+    al_polygon_phong_rvec3 al_polygon_phong_pm = (al_polygon_phong_l1 * al_polygon_phong_r + al_polygon_phong_l2 * n) / (al_polygon_phong_l1 + al_polygon_phong_l2);
+    al_polygon_phong_real al_polygon_phong_len = length(al_polygon_phong_pm);
+    if (!(al_polygon_phong_len > 1e-6f)) return 0.0f;
+    al_polygon_phong_rvec3 al_polygon_phong_rp = al_polygon_phong_pm / al_polygon_phong_len;
+    al_polygon_phong_real al_polygon_phong_lp = (al_polygon_phong_l1 + al_polygon_phong_l2) * al_polygon_phong_len;
+    al_polygon_phong_real al_polygon_phong_np = al_polygon_phong_lp > 1.0001f * al_polygon_phong_ln2 ? -al_polygon_phong_ln2 / al_polygon_phong_log1p(-al_polygon_phong_ln2 / al_polygon_phong_lp) : 1e5f;
+    al_polygon_phong_np = clamp(al_polygon_phong_np, 1.0f, 1e5f);
+    al_polygon_phong_real al_polygon_phong_rr = dot(al_polygon_phong_r, al_polygon_phong_rp), al_polygon_phong_nr = dot(n, al_polygon_phong_rp);
+    if (!(al_polygon_phong_rr > 0.0f) || !(al_polygon_phong_nr > 0.0f)) return 0.0f;
     // (r.rp)^N without the cancellation of 1 - r.rp (dist_phong.glsl): at N = 1e5 the
     // plain power lost 0.8% to fp32 rounding of the frame.
-    al_polygon_phong_real mu = al_polygon_phong_phong_power(r, rp, N) * nr;
+    al_polygon_phong_real al_polygon_phong_mu = al_polygon_phong_phong_power(al_polygon_phong_r, al_polygon_phong_rp, al_polygon_phong_N) * al_polygon_phong_nr;
     // int mu (rp.w)^np = mu 2 pi moment / (np + 1); specular = (N+2)/(2 pi) times that.
-    al_polygon_phong_real unused;
-    al_polygon_phong_real moment = al_polygon_phong_polygon_moments(c, side, n, rp, np, unused).y;
-    return (N + 2.0f) / (np + 1.0f) * mu * moment;
+    al_polygon_phong_real al_polygon_phong_unused;
+    al_polygon_phong_real al_polygon_phong_moment = al_polygon_phong_polygon_moments(al_polygon_phong_c, al_polygon_phong_side, n, al_polygon_phong_rp, al_polygon_phong_np, al_polygon_phong_unused).y;
+    return (al_polygon_phong_N + 2.0f) / (al_polygon_phong_np + 1.0f) * al_polygon_phong_mu * al_polygon_phong_moment;
 }
 #endif
 
@@ -605,19 +605,19 @@ al_polygon_phong_real al_polygon_phong_specular_sg(AlPolygonPhongCase c, al_poly
 // Diffuse, specular and moment (CONTRACT.md 2) for Phong: clip by the horizon of n
 // (diffuse, exact) and by r's hemisphere ((r.w)_+ vanishes beyond), streaming the
 // arcs into the method's boundary moments (polygon.glsl).
-vec4 al_polygon_phong_shade(AlPolygonPhongCase c) {
-    al_polygon_phong_rvec3 n = al_polygon_phong_rvec3(c.n);
-    al_polygon_phong_real side = al_polygon_phong_polygon_side(c);
-    if (side == 0.0f) return vec4(0.0f);
-    al_polygon_phong_real N = al_polygon_phong_real(c.params.x);
-    al_polygon_phong_rvec3 r = al_polygon_phong_rvec3(c.r);
+vec4 al_polygon_phong_shade(AlPolygonPhongCase al_polygon_phong_c) {
+    al_polygon_phong_rvec3 n = al_polygon_phong_rvec3(al_polygon_phong_c.n);
+    al_polygon_phong_real al_polygon_phong_side = al_polygon_phong_polygon_side(al_polygon_phong_c);
+    if (al_polygon_phong_side == 0.0f) return vec4(0.0f);
+    al_polygon_phong_real al_polygon_phong_N = al_polygon_phong_real(al_polygon_phong_c.al_polygon_phong_params.x);
+    al_polygon_phong_rvec3 al_polygon_phong_r = al_polygon_phong_rvec3(al_polygon_phong_c.r);
     al_polygon_phong_real diffuse;
-    al_polygon_phong_rvec2 sm = al_polygon_phong_polygon_moments(c, side, n, r, N, diffuse);
-    al_polygon_phong_real specular = sm.x;
+    al_polygon_phong_rvec2 al_polygon_phong_sm = al_polygon_phong_polygon_moments(al_polygon_phong_c, al_polygon_phong_side, n, al_polygon_phong_r, al_polygon_phong_N, diffuse);
+    al_polygon_phong_real specular = al_polygon_phong_sm.x;
 #ifdef AL_POLYGON_PHONG_SPECULAR_SG
-    specular = al_polygon_phong_specular_sg(c, side, r, n, N);
+    specular = al_polygon_phong_specular_sg(al_polygon_phong_c, al_polygon_phong_side, al_polygon_phong_r, n, al_polygon_phong_N);
 #endif
-    return vec4(diffuse, specular, sm.y, 0.0f);
+    return vec4(diffuse, specular, al_polygon_phong_sm.y, 0.0f);
 }
 #endif
 #line 624 "arealight-generated"
@@ -633,59 +633,59 @@ vec4 al_polygon_phong_shade(AlPolygonPhongCase c) {
 // precision), n, v and r unit, vertices as offsets from the mean. count is cut to
 // AL_MAX_VERTS. Fewer than 3 vertices, p at the mean or a non-finite d give a record
 // with no vertices, which every method shades as 0.
-AlPolygonPhongCase al_polygon_phong_polygon_record(ArealightSurface s, vec3 vertices[8], int count, bool two_sided) {
-    int m = clamp(count, 0, AL_POLYGON_PHONG_MAX_VERTS);
-    al_polygon_phong_rvec3 centre = al_polygon_phong_rvec3(0.0f);
-    for (int i = 0; i < AL_POLYGON_PHONG_MAX_VERTS; ++i) {
-        if (i >= m) break;
-        centre += al_polygon_phong_rvec3(vertices[i]);
+AlPolygonPhongCase al_polygon_phong_polygon_record(ArealightSurface al_polygon_phong_s, vec3 al_polygon_phong_vertices[8], int al_polygon_phong_count, bool al_polygon_phong_two_sided) {
+    int al_polygon_phong_m = clamp(al_polygon_phong_count, 0, AL_POLYGON_PHONG_MAX_VERTS);
+    al_polygon_phong_rvec3 al_polygon_phong_centre = al_polygon_phong_rvec3(0.0f);
+    for (int al_polygon_phong_i = 0; al_polygon_phong_i < AL_POLYGON_PHONG_MAX_VERTS; ++al_polygon_phong_i) {
+        if (al_polygon_phong_i >= al_polygon_phong_m) break;
+        al_polygon_phong_centre += al_polygon_phong_rvec3(al_polygon_phong_vertices[al_polygon_phong_i]);
     }
-    centre /= al_polygon_phong_real(max(m, 1));
-    al_polygon_phong_rvec3 rel = centre - al_polygon_phong_rvec3(s.p);
-    al_polygon_phong_real d = length(rel);
-    if (!(d > 0.0f) || isinf(d) || m < 3) {
-        m = 0;
-        d = 1.0f;
+    al_polygon_phong_centre /= al_polygon_phong_real(max(al_polygon_phong_m, 1));
+    al_polygon_phong_rvec3 al_polygon_phong_rel = al_polygon_phong_centre - al_polygon_phong_rvec3(al_polygon_phong_s.p);
+    al_polygon_phong_real al_polygon_phong_d = length(al_polygon_phong_rel);
+    if (!(al_polygon_phong_d > 0.0f) || isinf(al_polygon_phong_d) || al_polygon_phong_m < 3) {
+        al_polygon_phong_m = 0;
+        al_polygon_phong_d = 1.0f;
     }
-    al_polygon_phong_rvec3 z = m == 0 ? al_polygon_phong_rvec3(0.0f, 0.0f, 1.0f) : rel / d;
-    al_polygon_phong_rvec3 x, y;
-    al_polygon_phong_tangent_frame(z, x, y);
-    al_polygon_phong_rvec3 n = normalize(al_polygon_phong_rvec3(s.n));
-    al_polygon_phong_rvec3 v = normalize(al_polygon_phong_rvec3(s.v));
-    al_polygon_phong_rvec3 r = normalize(2.0f * dot(n, v) * n - v);
-    AlPolygonPhongCase c;
-    c.n = al_polygon_phong_rvec4(dot(n, x), dot(n, y), dot(n, z), 0.0f);
-    c.v = al_polygon_phong_rvec4(dot(v, x), dot(v, y), dot(v, z), 0.0f);
-    c.r = al_polygon_phong_rvec4(dot(r, x), dot(r, y), dot(r, z), 0.0f);
-    c.params = al_polygon_phong_rvec4(al_polygon_phong_real(s.param), two_sided ? 1.0f : 0.0f, al_polygon_phong_real(m), al_polygon_phong_real(s.f0));
-    c.center = al_polygon_phong_rvec4(0.0f, 0.0f, 1.0f, 0.0f);
-    for (int i = 0; i < AL_POLYGON_PHONG_MAX_VERTS; ++i) {
-        al_polygon_phong_rvec3 e = i < m ? (al_polygon_phong_rvec3(vertices[i]) - centre) / d : al_polygon_phong_rvec3(0.0f);
-        c.verts[i] = al_polygon_phong_rvec4(dot(e, x), dot(e, y), dot(e, z), 0.0f);
+    al_polygon_phong_rvec3 al_polygon_phong_z = al_polygon_phong_m == 0 ? al_polygon_phong_rvec3(0.0f, 0.0f, 1.0f) : al_polygon_phong_rel / al_polygon_phong_d;
+    al_polygon_phong_rvec3 al_polygon_phong_x, al_polygon_phong_y;
+    al_polygon_phong_tangent_frame(al_polygon_phong_z, al_polygon_phong_x, al_polygon_phong_y);
+    al_polygon_phong_rvec3 n = normalize(al_polygon_phong_rvec3(al_polygon_phong_s.n));
+    al_polygon_phong_rvec3 v = normalize(al_polygon_phong_rvec3(al_polygon_phong_s.v));
+    al_polygon_phong_rvec3 al_polygon_phong_r = normalize(2.0f * dot(n, v) * n - v);
+    AlPolygonPhongCase al_polygon_phong_c;
+    al_polygon_phong_c.n = al_polygon_phong_rvec4(dot(n, al_polygon_phong_x), dot(n, al_polygon_phong_y), dot(n, al_polygon_phong_z), 0.0f);
+    al_polygon_phong_c.v = al_polygon_phong_rvec4(dot(v, al_polygon_phong_x), dot(v, al_polygon_phong_y), dot(v, al_polygon_phong_z), 0.0f);
+    al_polygon_phong_c.r = al_polygon_phong_rvec4(dot(al_polygon_phong_r, al_polygon_phong_x), dot(al_polygon_phong_r, al_polygon_phong_y), dot(al_polygon_phong_r, al_polygon_phong_z), 0.0f);
+    al_polygon_phong_c.al_polygon_phong_params = al_polygon_phong_rvec4(al_polygon_phong_real(al_polygon_phong_s.param), al_polygon_phong_two_sided ? 1.0f : 0.0f, al_polygon_phong_real(al_polygon_phong_m), al_polygon_phong_real(al_polygon_phong_s.f0));
+    al_polygon_phong_c.al_polygon_phong_center = al_polygon_phong_rvec4(0.0f, 0.0f, 1.0f, 0.0f);
+    for (int al_polygon_phong_i = 0; al_polygon_phong_i < AL_POLYGON_PHONG_MAX_VERTS; ++al_polygon_phong_i) {
+        al_polygon_phong_rvec3 al_polygon_phong_e = al_polygon_phong_i < al_polygon_phong_m ? (al_polygon_phong_rvec3(al_polygon_phong_vertices[al_polygon_phong_i]) - al_polygon_phong_centre) / al_polygon_phong_d : al_polygon_phong_rvec3(0.0f);
+        al_polygon_phong_c.al_polygon_phong_verts[al_polygon_phong_i] = al_polygon_phong_rvec4(dot(al_polygon_phong_e, al_polygon_phong_x), dot(al_polygon_phong_e, al_polygon_phong_y), dot(al_polygon_phong_e, al_polygon_phong_z), 0.0f);
     }
-    return c;
+    return al_polygon_phong_c;
 }
 
 // Every quantity the variant computes (diffuse, specular, then ndf or moment where
 // it has one): the public function returns the first two; the validation kernel
 // also reads the others. No NaN, infinity or negative value leaves (al_clean).
-vec4 al_polygon_phong_polygon_evaluate(ArealightSurface s, vec3 vertices[8], int count, bool two_sided) {
-    return al_polygon_phong_clean(al_polygon_phong_shade(al_polygon_phong_polygon_record(s, vertices, count, two_sided)));
+vec4 al_polygon_phong_polygon_evaluate(ArealightSurface al_polygon_phong_s, vec3 al_polygon_phong_vertices[8], int al_polygon_phong_count, bool al_polygon_phong_two_sided) {
+    return al_polygon_phong_clean(al_polygon_phong_shade(al_polygon_phong_polygon_record(al_polygon_phong_s, al_polygon_phong_vertices, al_polygon_phong_count, al_polygon_phong_two_sided)));
 }
 #line 676 "arealight-generated"
 // arealight_polygon_phong: variant dist=phong,method=point,light=polygon,verts=3.
 // Domain: p, n, v, the light in one space, fp32 (n, v any length); convex planar polygon, counter-clockwise seen from its emitting side, count in [3, AL_MAX_VERTS] (more are cut to the first AL_MAX_VERTS); s.param the exponent N in [1, 1e5]; s.f0 in [0, 1] (ignored).
 // Returns diffuse and specular of CONTRACT.md 2 for unit radiance: finite, >= 0.
 // Error and cost: not in arealight's measured data (see arealight report).
-ArealightShading arealight_polygon_phong(ArealightSurface s, vec3 vertices[8], int count, bool two_sided) {
-    vec4 q = al_polygon_phong_polygon_evaluate(s, vertices, count, two_sided);
-    ArealightShading result;
-    result.diffuse = q.x;
-    result.specular = q.y;
-    return result;
+ArealightShading arealight_polygon_phong(ArealightSurface al_polygon_phong_s, vec3 al_polygon_phong_vertices[8], int al_polygon_phong_count, bool al_polygon_phong_two_sided) {
+    vec4 al_polygon_phong_q = al_polygon_phong_polygon_evaluate(al_polygon_phong_s, al_polygon_phong_vertices, al_polygon_phong_count, al_polygon_phong_two_sided);
+    ArealightShading al_polygon_phong_result;
+    al_polygon_phong_result.diffuse = al_polygon_phong_q.x;
+    al_polygon_phong_result.specular = al_polygon_phong_q.y;
+    return al_polygon_phong_result;
 }
 #define AREALIGHT_HAS_POLYGON_PHONG 1
-#endif  // AREALIGHT_LIBRARY_F2D50FB60A12FA3E
+#endif  // AREALIGHT_LIBRARY_47F2C9C3270CBA0C
 #define AL_KERNEL_SHADE arealight_polygon_phong
 #define AL_KERNEL_EVALUATE al_polygon_phong_polygon_evaluate
 #define AL_KERNEL_ARGS vertices, count, two_sided
