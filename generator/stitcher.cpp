@@ -192,26 +192,61 @@ std::string shared_sampler_marker(std::size_t entry) {
     return fmt::format("// arealight shared sampler {}\n", entry);
 }
 
+// Separately generated libraries included into one shader must not bind their tables
+// at the same numbers (CONTRACT.md 5). Each library with tables takes the first of
+// kTableSlots slots of kSlotWidth bindings that no library included before it took
+// (AREALIGHT_TABLE_SLOT_<s>, defined by the taker), so its k-th table defaults to
+// kSlotWidth s + k, or AREALIGHT_BINDING + kSlotWidth s + k where the renderer defines
+// AREALIGHT_BINDING, unless the table's own macro is defined. The defaults are literals
+// (GLSL ES 3.10 takes only literal layout ids). kSlotWidth: a library has at most two
+// tables per distribution (library_samplers shares the rest), eight in all.
+constexpr int kSlotWidth = 8;
+constexpr int kTableSlots = 8;
+
+void emit_table_slots(std::string& out, const std::vector<Variant>& variants,
+                      const std::vector<LibrarySampler>& plan) {
+    std::vector<std::pair<std::string, int>> macros;
+    for (const auto& s : plan)
+        if (s.shares < 0)
+            macros.emplace_back(sampler_binding_macro(variants[s.variant], s.sampler),
+                                s.binding_offset);
+    if (macros.empty()) return;
+    out += fmt::format(
+        "// The tables' default bindings: the first slot of {0} that no arealight library\n"
+        "// included before this one took (slot s: {0} s + k, after AREALIGHT_BINDING if\n"
+        "// defined); a table's own _BINDING macro, defined before the include, wins.\n",
+        kSlotWidth);
+    for (int slot = 0; slot < kTableSlots; ++slot) {
+        out += fmt::format("#{} !defined(AREALIGHT_TABLE_SLOT_{})\n#define AREALIGHT_TABLE_SLOT_{} 1\n",
+                           slot == 0 ? "if" : "elif", slot, slot);
+        for (const auto& [macro, k] : macros) {
+            const int binding = kSlotWidth * slot + k;
+            out += fmt::format(
+                "#ifndef {0}\n#ifdef AREALIGHT_BINDING\n#define {0} (AREALIGHT_BINDING + {1})\n"
+                "#else\n#define {0} {1}\n#endif\n#endif\n",
+                macro, binding);
+        }
+    }
+    out += fmt::format(
+        "#else\n#error arealight: more than {} libraries with tables in one shader; define "
+        "each table's _BINDING macro (tables.json: binding_macro) before including this one\n"
+        "#endif\n",
+        kTableSlots);
+}
+
 // The tables the variant samples (`entries`, its part of library_samplers): in GLSL
-// sampled images at set AREALIGHT_SET and binding AREALIGHT_<TAG>_<NAME>_BINDING,
-// which defaults to AREALIGHT_BINDING plus the sampler's binding offset in the library,
-// or, for a table an earlier variant's sampler already reads, a marker for the alias;
-// in C++ the mirror's samplers (bound by its run(), generator/mirror_tool.cpp).
+// sampled images at set AREALIGHT_SET and binding AREALIGHT_<TAG>_<NAME>_BINDING
+// (emit_table_slots gives its default), or, for a table an earlier variant's sampler
+// already reads, a marker for the alias; in C++ the mirror's samplers (bound by its
+// run(), generator/mirror_tool.cpp).
 void emit_samplers(std::string& out, const Variant& v, Language lang,
                    const std::vector<std::pair<std::size_t, LibrarySampler>>& entries) {
     for (const auto& [entry, s] : entries) {
         if (lang == Language::Glsl && s.shares >= 0) {
             out += shared_sampler_marker(entry);
         } else if (lang == Language::Glsl) {
-            const std::string macro = sampler_binding_macro(v, s.sampler);
-            // A literal unless the renderer moves every table with AREALIGHT_BINDING: GLSL ES
-            // 3.10 takes only literals as layout ids.
-            out += fmt::format(
-                "#ifndef {0}\n#ifdef AREALIGHT_BINDING\n#define {0} (AREALIGHT_BINDING + {1})\n"
-                "#else\n#define {0} {1}\n#endif\n#endif\n",
-                macro, s.binding_offset);
             out += fmt::format("layout(set = AREALIGHT_SET, binding = {}) uniform sampler2D {};\n",
-                               macro, s.sampler);
+                               sampler_binding_macro(v, s.sampler), s.sampler);
         } else {
             out += fmt::format("static thread_local AlSampler2D {};\n", s.sampler);
         }
@@ -331,6 +366,7 @@ void emit_library(std::string& out, const std::vector<Variant>& variants, Langua
     }
     emit_template(out, "templates/library_types.glsl", lookup, "");
     const std::vector<LibrarySampler> plan = library_samplers(variants);
+    if (lang == Language::Glsl) emit_table_slots(out, variants, plan);
     for (std::size_t vi = 0; vi < variants.size(); ++vi) {
         const Variant& v = variants[vi];
         std::vector<std::pair<std::size_t, LibrarySampler>> entries;

@@ -13,6 +13,7 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <regex>
 #include <set>
 #include <string>
@@ -490,6 +491,57 @@ TEST_CASE("within one library, identical tables share one sampler", "[library]")
     });
     INFO(why);
     CHECK(spirv);
+}
+
+// Two LTC libraries generated separately and included into one shader: the first takes
+// bindings 0 and 1 (AREALIGHT_BINDING + 0, + 1 where defined), the second the next slot,
+// 8 and 9, so no table is bound twice (CONTRACT.md 5); read from the SPIR-V's decorations.
+TEST_CASE("two separately generated LTC libraries bind distinct tables by default",
+          "[library]") {
+    ScratchFolder dir("library_two_tables");
+    dir.write("g.glsl", library({variant("dist=ggx,method=ltc,light=polygon")}));
+    dir.write("b.glsl", library({variant("dist=beckmann,method=ltc,light=polygon")}));
+    auto bindings = [&](const std::string& prolog) {
+        const std::string shader =
+            "#version 450\n" + prolog +
+            "#include \"g.glsl\"\n#include \"b.glsl\"\nlayout(local_size_x = 1) in;\n"
+            "layout(std430, binding = 30) buffer Out { vec4 o[]; };\n"
+            "void main() {\n    ArealightSurface s;\n"
+            "    s.p = vec3(0.0); s.n = vec3(0.0, 0.0, 1.0); s.v = vec3(0.0, 0.6, 0.8);\n"
+            "    s.param = 0.3; s.f0 = 1.0;\n    vec3 q[8];\n"
+            "    for (int i = 0; i < 8; ++i) q[i] = vec3(0.0);\n"
+            "    q[0] = vec3(-1.0, -1.0, 2.0); q[1] = vec3(1.0, -1.0, 2.0);\n"
+            "    q[2] = vec3(1.0, 1.0, 2.0); q[3] = vec3(-1.0, 1.0, 2.0);\n"
+            "    ArealightShading a = arealight_polygon_ggx(s, q, 4, true);\n"
+            "    ArealightShading b = arealight_polygon_beckmann(s, q, 4, true);\n"
+            "    o[0] = vec4(a.diffuse, a.specular, b.diffuse, b.specular);\n}\n";
+        std::string why;
+        CompileOptions options;
+        options.includes = true;
+        options.optimize = false;  // keeps the samplers' names
+        options.include_dirs = {dir / ""};
+        const auto spirv = compile_glsl(shader, dir / "two.comp", options, [&](const Diagnostic& d) {
+            why += d.file + ":" + std::to_string(d.line) + ": " + d.message + "\n";
+        });
+        INFO(why);
+        REQUIRE(spirv);
+        std::map<std::string, int> found;
+        const std::string text = disassemble(*spirv);
+        const std::regex decoration(R"(OpDecorate %(al_\w+_ltc_\w+) Binding (\d+))");
+        for (auto it = std::sregex_iterator(text.begin(), text.end(), decoration);
+             it != std::sregex_iterator(); ++it)
+            found[(*it)[1].str()] = std::stoi((*it)[2].str());
+        return found;
+    };
+    const std::map<std::string, int> plain = {
+        {"al_polygon_ggx_ltc_matrix", 0}, {"al_polygon_ggx_ltc_amplitude", 1},
+        {"al_polygon_beckmann_ltc_matrix", 8}, {"al_polygon_beckmann_ltc_amplitude", 9}};
+    CHECK(bindings("") == plain);
+    const std::map<std::string, int> moved = {
+        {"al_polygon_ggx_ltc_matrix", 5}, {"al_polygon_ggx_ltc_amplitude", 6},
+        {"al_polygon_beckmann_ltc_matrix", 13}, {"al_polygon_beckmann_ltc_amplitude", 20}};
+    CHECK(bindings("#define AREALIGHT_BINDING 5\n"
+                   "#define AREALIGHT_POLYGON_BECKMANN_LTC_AMPLITUDE_BINDING 20\n") == moved);
 }
 
 }  // namespace arealight::test
