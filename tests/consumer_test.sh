@@ -56,6 +56,22 @@ t=$(now)
   || fail "consumer.png is not a PNG"
 echo "consumer_test: render $(since "$t"), $(stat -c %s "$work/consumer.png") bytes"
 
+# The scene has every light type it may (polygon, disk, sphere) and three distributions: the
+# shader calls each through the library's AREALIGHT_HAS_ macros.
+for f in arealight_polygon_ggx arealight_polygon_phong arealight_disk_beckmann arealight_sphere_ggx; do
+  grep -q "^ArealightShading $f(" "$lib" || fail "the library has no $f"
+done
+# A tables folder of another library is refused by name, not a crash: an empty one here.
+mkdir -p "$work/no_tables"
+printf '{"format": "arealight-tables/1", "tables": []}\n' >"$work/no_tables/tables.json"
+set +e
+(cd "$work" && ./build/consumer wrong.png --tables "$work/no_tables") >"$work/wrong.log" 2>&1
+status=$?
+set -e
+[ "$status" = 1 ] || fail "a wrong tables folder gave exit $status, not 1: $(cat "$work/wrong.log")"
+grep -q "samples binding" "$work/wrong.log" || fail "no message naming the binding: $(cat "$work/wrong.log")"
+[ ! -e "$work/wrong.png" ] || fail "a refused render wrote its PNG"
+
 # A no-op rebuild runs nothing of arealight's.
 lib_before=$(stamp "$lib"); spv_before=$(stamp "$spv")
 rebuild noop

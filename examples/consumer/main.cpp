@@ -34,9 +34,9 @@ struct Frame {
     int32_t width = 0, height = 0, light_count = 0, object_count = 0;
 };
 struct Light {
-    Vec4 vertices[8];
+    Vec4 data[8];  // render.comp's Light: polygon vertices, or centre and axes / radius
     float intensity = 1;
-    int32_t count = 0, two_sided = 0, pad0 = 0;
+    int32_t type = 0, count = 0, two_sided = 0;
 };
 struct Material {
     int32_t dist = 0;
@@ -105,15 +105,39 @@ Scene read_scene(const std::string& path, int width, int height) {
     for (std::size_t i = 0; i < field(j, "lights", path).size(); ++i) {
         const json& l = j["lights"][i];
         const std::string where = path + ": lights[" + std::to_string(i) + "]";
-        if (field(l, "type", where) != "polygon")
-            throw BadScene(where + ": field 'type': this example renders polygon lights only");
-        const json& vs = field(l, "vertices", where);
-        if (!vs.is_array() || vs.size() < 3 || vs.size() > 8)
-            throw BadScene(where + ": field 'vertices': 3 to 8 points");
+        const std::string type = field(l, "type", where);
         Light light;
-        light.count = static_cast<int32_t>(vs.size());
-        for (std::size_t k = 0; k < vs.size(); ++k)
-            light.vertices[k] = vec(vs[k], where + ".vertices[" + std::to_string(k) + "]");
+        if (type == "polygon") {
+            const json& vs = field(l, "vertices", where);
+            if (!vs.is_array() || vs.size() < 3 || vs.size() > 8)
+                throw BadScene(where + ": field 'vertices': 3 to 8 points");
+            light.type = 0;
+            light.count = static_cast<int32_t>(vs.size());
+            for (std::size_t k = 0; k < vs.size(); ++k)
+                light.data[k] = vec(vs[k], where + ".vertices[" + std::to_string(k) + "]");
+        } else if (type == "disk") {
+            light.type = 1;
+            light.data[0] = vec(field(l, "center", where), where + ".center");
+            light.data[1] = vec(field(l, "u", where), where + ".u");
+            light.data[2] = vec(field(l, "v", where), where + ".v");
+        } else if (type == "sphere") {
+            light.type = 2;
+            const json& radius = field(l, "radius", where);
+            if (!radius.is_number() || !(radius.get<float>() > 0))
+                throw BadScene(where + ": field 'radius': a positive number");
+            light.data[0] = vec(field(l, "center", where), where + ".center", radius.get<float>());
+        } else if (type == "ellipsoid") {
+            light.type = 3;
+            light.data[0] = vec(field(l, "center", where), where + ".center");
+            const json& axes = field(l, "axes", where);
+            if (!axes.is_array() || axes.size() != 3)
+                throw BadScene(where + ": field 'axes': three semi-axis vectors");
+            for (std::size_t k = 0; k < 3; ++k)
+                light.data[k + 1] = vec(axes[k], where + ".axes[" + std::to_string(k) + "]");
+        } else {
+            throw BadScene(where + ": field 'type': '" + type +
+                           "' is not polygon, disk, sphere or ellipsoid");
+        }
         light.two_sided = l.value("two_sided", false) ? 1 : 0;
         light.intensity = l.value("intensity", 1.0f);
         s.lights.push_back(light);
@@ -123,15 +147,16 @@ Scene read_scene(const std::string& path, int width, int height) {
         const std::string where = path + ": materials[" + std::to_string(i) + "]";
         Material mat;
         const std::string dist = field(m, "distribution", where);
-        if (dist == "ggx") {
-            mat.dist = 0;
-            mat.param = field(m, "alpha", where).get<float>();
-        } else if (dist == "phong") {
-            mat.dist = 1;
-            mat.param = field(m, "exponent", where).get<float>();
-        } else {
-            throw BadScene(where + ": field 'distribution': render.comp calls ggx and phong only");
-        }
+        // render.comp's kGgx, kPhong, kBeckmann, kBlinn; the parameter as CONTRACT.md 7 names it.
+        const char* const names[] = {"ggx", "phong", "beckmann", "blinn"};
+        const char* const params[] = {"alpha", "exponent", "alpha", "exponent"};
+        int k = 0;
+        while (k < 4 && dist != names[k]) ++k;
+        if (k == 4)
+            throw BadScene(where + ": field 'distribution': '" + dist +
+                           "' is not ggx, phong, beckmann or blinn");
+        mat.dist = k;
+        mat.param = field(m, params[k], where).get<float>();
         mat.f0 = m.value("f0", 1.0f);
         s.materials.push_back(mat);
     }
@@ -586,6 +611,27 @@ std::vector<uint32_t> read_spirv(const std::string& path) {
     return words;
 }
 
+// The bindings of the module's UniformConstant variables (its sampled images): what the
+// tables folder must provide, read from the SPIR-V's OpVariable and OpDecorate Binding.
+std::set<uint32_t> sampler_bindings(const std::vector<uint32_t>& words) {
+    constexpr uint32_t kOpDecorate = 71, kOpVariable = 59, kBinding = 33, kUniformConstant = 0;
+    std::set<uint32_t> uniform_constants;
+    std::vector<std::pair<uint32_t, uint32_t>> bindings;  // (id, binding)
+    for (std::size_t i = 5; i < words.size();) {
+        const uint32_t count = words[i] >> 16, op = words[i] & 0xffff;
+        if (count == 0 || i + count > words.size()) throw std::runtime_error("malformed SPIR-V");
+        if (op == kOpVariable && count >= 4 && words[i + 3] == kUniformConstant)
+            uniform_constants.insert(words[i + 2]);
+        if (op == kOpDecorate && count >= 4 && words[i + 2] == kBinding)
+            bindings.emplace_back(words[i + 1], words[i + 3]);
+        i += count;
+    }
+    std::set<uint32_t> out;
+    for (const auto& [id, binding] : bindings)
+        if (uniform_constants.count(id)) out.insert(binding);
+    return out;
+}
+
 // RGBA8 pixels (alpha ignored) to an 8-bit RGB PNG, through a temporary file renamed over
 // `path` so that a failed write leaves no partial image.
 void write_png(const std::string& path, const uint32_t* rgba, int width, int height) {
@@ -672,8 +718,25 @@ int main(int argc, char** argv) {
             image_bindings.push_back(
                 {kArealightBinding + static_cast<uint32_t>(t.binding_offset), images.back().get()});
         }
-        ComputePipeline pipeline(gpu, read_spirv(spirv_path),
-                                 {&frame, &lights, &materials, &objects, &pixels}, image_bindings);
+        // Every table the shader samples must come from the folder, and nothing else: a
+        // folder of another scene's library would leave a sampler unbound.
+        const std::vector<uint32_t> spirv = read_spirv(spirv_path);
+        std::set<uint32_t> given;
+        for (const ImageBinding& b : image_bindings) given.insert(b.binding);
+        const std::set<uint32_t> wanted = sampler_bindings(spirv);
+        for (uint32_t b : wanted)
+            if (!given.count(b))
+                throw BadTables(tables_dir + "/tables.json: " + spirv_path + " samples binding " +
+                                std::to_string(b) + ", which no table of the folder takes (binding_offset " +
+                                std::to_string(b - kArealightBinding) +
+                                "); is it the tables folder of this shader's library?");
+        for (uint32_t b : given)
+            if (!wanted.count(b))
+                throw BadTables(tables_dir + "/tables.json: a table takes binding " +
+                                std::to_string(b) + ", which " + spirv_path +
+                                " does not sample; is it the tables folder of this shader's library?");
+        ComputePipeline pipeline(gpu, spirv, {&frame, &lights, &materials, &objects, &pixels},
+                                 image_bindings);
         constexpr uint32_t kGroup = 8;  // render.comp's local_size_x and _y
         pipeline.run(gpu.queue(), (width + kGroup - 1) / kGroup, (height + kGroup - 1) / kGroup);
         // Read back: the fence has signalled and the memory is coherent.

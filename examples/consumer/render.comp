@@ -1,8 +1,11 @@
 #version 450
 // Renders the scene of scene.json, one invocation per pixel: a camera ray is cast
 // analytically against the scene's objects (plane, spheres, boxes) and the hit point is shaded
-// by every polygon light through the generated arealight library. Written against CONTRACT.md
-// section 5 only: ArealightSurface, ArealightShading and arealight_polygon_<dist>.
+// by every light (polygon, disk, sphere, ellipsoid) through the generated arealight library.
+// Written against CONTRACT.md section 5 only: ArealightSurface, ArealightShading, the
+// arealight_<light>_<dist> functions and their AREALIGHT_HAS_<LIGHT>_<DIST> macros, so it
+// compiles against the library of any scene (a (light, dist) pair the scene lacks has no
+// function, and no call here).
 // Pixel = sum over lights of intensity * (albedo * diffuse + specular), as `arealight render`
 // draws the same scene; area lights are not shadowed (the integrals see the whole light).
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -14,20 +17,27 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 // The host's layout: every record std430, vec3 values padded to vec4.
 struct Light {
-    vec4 vertices[8];
+    vec4 data[8];  // polygon: vertices; disk: center, u, v; sphere: center and radius in w;
+                   // ellipsoid: center, then its three semi-axes
     float intensity;
-    int count;
+    int type;      // kPolygon, kDisk, kSphere, kEllipsoid
+    int count;     // polygon: vertex count
     int two_sided;
-    int pad0;
 };
+const int kPolygon = 0;
+const int kDisk = 1;
+const int kSphere = 2;
+const int kEllipsoid = 3;
 struct Material {
-    int dist;  // kDistGgx or kDistPhong
+    int dist;  // kGgx, kPhong, kBeckmann, kBlinn
     float param;
     float f0;
     float pad0;
 };
-const int kDistGgx = 0;
-const int kDistPhong = 1;
+const int kGgx = 0;
+const int kPhong = 1;
+const int kBeckmann = 2;
+const int kBlinn = 3;
 struct Object {
     vec4 a;  // plane: normal, offset; sphere: centre, radius; box: min
     vec4 b;  // box: max
@@ -37,7 +47,7 @@ struct Object {
     int pad0, pad1;
 };
 const int kPlane = 0;
-const int kSphere = 1;
+const int kBall = 1;
 const int kBox = 2;
 
 layout(std430, set = 0, binding = 0) readonly buffer Frame {
@@ -67,7 +77,7 @@ float intersect(int k, vec3 o, vec3 d, out vec3 normal) {
         normal = ob.a.xyz;
         return (abs(denom) > 1e-8 && t > 1e-4) ? t : kFar;
     }
-    if (ob.type == kSphere) {
+    if (ob.type == kBall) {
         vec3 oc = o - ob.a.xyz;
         float b = dot(oc, d);
         float c = dot(oc, oc) - ob.a.w * ob.a.w;
@@ -93,37 +103,127 @@ float intersect(int k, vec3 o, vec3 d, out vec3 normal) {
     return enter;
 }
 
-// Distance along the ray to light i's emitting side (kFar when missed): the camera sees the
-// lights themselves.
+// Nearest positive t of the ray o + t d on the unit sphere, after the ray is taken into
+// the frame where the light is that sphere (kFar when missed).
+float unit_sphere_hit(vec3 o, vec3 d) {
+    float a = dot(d, d), b = dot(o, d), c = dot(o, o) - 1.0;
+    float disc = b * b - a * c;
+    if (disc < 0.0) return kFar;
+    float t = (-b - sqrt(disc)) / a;
+    return t > 1e-4 ? t : kFar;
+}
+
+// Distance along the ray to light i's emitting surface (kFar when missed): the camera
+// sees the lights themselves.
 float intersect_light(int i, vec3 o, vec3 d) {
     Light l = lights[i];
-    vec3 n = cross(l.vertices[1].xyz - l.vertices[0].xyz, l.vertices[2].xyz - l.vertices[0].xyz);
+    vec3 c = l.data[0].xyz;
+    if (l.type == kSphere) return unit_sphere_hit((o - c) / l.data[0].w, d / l.data[0].w);
+    if (l.type == kEllipsoid) {
+        // The axes are orthogonal: coordinates along each, in units of its length.
+        vec3 oc = o - c, ol, dl;
+        for (int k = 0; k < 3; ++k) {
+            vec3 a = l.data[k + 1].xyz;
+            ol[k] = dot(oc, a) / dot(a, a);
+            dl[k] = dot(d, a) / dot(a, a);
+        }
+        return unit_sphere_hit(ol, dl);
+    }
+    vec3 n = l.type == kDisk
+                 ? cross(l.data[1].xyz, l.data[2].xyz)
+                 : cross(l.data[1].xyz - l.data[0].xyz, l.data[2].xyz - l.data[0].xyz);
     float denom = dot(n, d);
     if (denom >= 0.0 && l.two_sided == 0) return kFar;
-    float t = dot(n, l.vertices[0].xyz - o) / denom;
+    float t = dot(n, l.data[0].xyz - o) / denom;
     if (!(t > 1e-4)) return kFar;
     vec3 x = o + t * d;
+    if (l.type == kDisk) {
+        vec3 u = l.data[1].xyz, v = l.data[2].xyz;
+        float a = dot(x - c, u) / dot(u, u), b = dot(x - c, v) / dot(v, v);
+        return a * a + b * b <= 1.0 ? t : kFar;
+    }
     for (int k = 0; k < l.count; ++k) {
-        vec3 a = l.vertices[k].xyz;
-        vec3 b = l.vertices[(k + 1) % l.count].xyz;
+        vec3 a = l.data[k].xyz;
+        vec3 b = l.data[(k + 1) % l.count].xyz;
         if (dot(cross(b - a, x - a), n) < 0.0) return kFar;
     }
     return t;
+}
+
+// One light's diffuse and specular at s through the library's function for its type and
+// the material's distribution; zero for a pair the library does not have (the scene
+// generated it, so the pair does not occur).
+ArealightShading shade_light(ArealightSurface s, Light l, int dist) {
+    ArealightShading r = ArealightShading(0.0, 0.0);
+    bool two_sided = l.two_sided != 0;
+    vec3 c = l.data[0].xyz;
+    if (l.type == kPolygon) {
+        vec3 vertices[8];
+        for (int k = 0; k < 8; ++k) vertices[k] = l.data[k].xyz;
+#ifdef AREALIGHT_HAS_POLYGON_GGX
+        if (dist == kGgx) r = arealight_polygon_ggx(s, vertices, l.count, two_sided);
+#endif
+#ifdef AREALIGHT_HAS_POLYGON_PHONG
+        if (dist == kPhong) r = arealight_polygon_phong(s, vertices, l.count, two_sided);
+#endif
+#ifdef AREALIGHT_HAS_POLYGON_BECKMANN
+        if (dist == kBeckmann) r = arealight_polygon_beckmann(s, vertices, l.count, two_sided);
+#endif
+#ifdef AREALIGHT_HAS_POLYGON_BLINN
+        if (dist == kBlinn) r = arealight_polygon_blinn(s, vertices, l.count, two_sided);
+#endif
+    } else if (l.type == kDisk) {
+        vec3 u = l.data[1].xyz, v = l.data[2].xyz;
+#ifdef AREALIGHT_HAS_DISK_GGX
+        if (dist == kGgx) r = arealight_disk_ggx(s, c, u, v, two_sided);
+#endif
+#ifdef AREALIGHT_HAS_DISK_PHONG
+        if (dist == kPhong) r = arealight_disk_phong(s, c, u, v, two_sided);
+#endif
+#ifdef AREALIGHT_HAS_DISK_BECKMANN
+        if (dist == kBeckmann) r = arealight_disk_beckmann(s, c, u, v, two_sided);
+#endif
+#ifdef AREALIGHT_HAS_DISK_BLINN
+        if (dist == kBlinn) r = arealight_disk_blinn(s, c, u, v, two_sided);
+#endif
+    } else if (l.type == kSphere) {
+        float radius = l.data[0].w;
+#ifdef AREALIGHT_HAS_SPHERE_GGX
+        if (dist == kGgx) r = arealight_sphere_ggx(s, c, radius);
+#endif
+#ifdef AREALIGHT_HAS_SPHERE_PHONG
+        if (dist == kPhong) r = arealight_sphere_phong(s, c, radius);
+#endif
+#ifdef AREALIGHT_HAS_SPHERE_BECKMANN
+        if (dist == kBeckmann) r = arealight_sphere_beckmann(s, c, radius);
+#endif
+#ifdef AREALIGHT_HAS_SPHERE_BLINN
+        if (dist == kBlinn) r = arealight_sphere_blinn(s, c, radius);
+#endif
+    } else {
+        vec3 axes[3];
+        for (int k = 0; k < 3; ++k) axes[k] = l.data[k + 1].xyz;
+#ifdef AREALIGHT_HAS_ELLIPSOID_GGX
+        if (dist == kGgx) r = arealight_ellipsoid_ggx(s, c, axes);
+#endif
+#ifdef AREALIGHT_HAS_ELLIPSOID_PHONG
+        if (dist == kPhong) r = arealight_ellipsoid_phong(s, c, axes);
+#endif
+#ifdef AREALIGHT_HAS_ELLIPSOID_BECKMANN
+        if (dist == kBeckmann) r = arealight_ellipsoid_beckmann(s, c, axes);
+#endif
+#ifdef AREALIGHT_HAS_ELLIPSOID_BLINN
+        if (dist == kBlinn) r = arealight_ellipsoid_blinn(s, c, axes);
+#endif
+    }
+    return r;
 }
 
 vec3 shade(vec3 p, vec3 n, vec3 v, Material m, vec3 albedo) {
     ArealightSurface s = ArealightSurface(p, n, v, m.param, m.f0);
     vec3 color = vec3(0.0);
     for (int i = 0; i < frame.light_count; ++i) {
-        vec3 vertices[8];
-        for (int k = 0; k < 8; ++k) vertices[k] = lights[i].vertices[k].xyz;
-        bool two_sided = lights[i].two_sided != 0;
-        ArealightShading r;
-        if (m.dist == kDistGgx) {
-            r = arealight_polygon_ggx(s, vertices, lights[i].count, two_sided);
-        } else {
-            r = arealight_polygon_phong(s, vertices, lights[i].count, two_sided);
-        }
+        ArealightShading r = shade_light(s, lights[i], m.dist);
         color += lights[i].intensity * (albedo * r.diffuse + r.specular);
     }
     return color;
