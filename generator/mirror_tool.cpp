@@ -103,7 +103,7 @@ int main(int argc, char** argv) {
             bind += fmt::format("    {0}.tex = texture_count > {1} ? textures[{1}] : nullptr;\n",
                                 arealight::library_rename(samplers[k], variants[i]), k);
         }
-        // The validation kernel's loop (templates/kernel.glsl) over the same packed
+        // The validation kernel's loop (templates/library/kernel.glsl) over the same packed
         // cases: the library function for diffuse and specular, and with `second` the
         // entry's other quantities from a second call.
         out += fmt::format(

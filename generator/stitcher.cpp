@@ -22,7 +22,7 @@ constexpr const char* kGeneratedName = "arealight-generated";
 // What the library offers per light type (CONTRACT.md 5): the public function's
 // light parameters, the templates that turn them into the methods' record, and how
 // the validation kernel and the CPU mirror pass a case's light (their locals
-// vertices[8], axes[3], count, two_sided; templates/kernel.glsl). A new light type
+// vertices[8], axes[3], count, two_sided; templates/library/kernel.glsl). A new light type
 // is a row.
 struct LightEntry {
     LightType light;
@@ -36,20 +36,20 @@ struct LightEntry {
 const std::vector<LightEntry>& light_entries() {
     static const std::vector<LightEntry> rows = {
         {LightType::Polygon, "vec3 vertices[8], int count, bool two_sided",
-         "vertices, count, two_sided", {"library_polygon.glsl"}, "vertices, count, two_sided",
+         "vertices, count, two_sided", {"library/polygon.glsl"}, "vertices, count, two_sided",
          "convex planar polygon, counter-clockwise seen from its emitting side, count in [3, "
          "AL_MAX_VERTS] (more are cut to the first AL_MAX_VERTS)"},
         // axis_u, axis_v (CONTRACT 5): case files' u and v, named apart from the view s.v.
         {LightType::Disk, "vec3 center, vec3 axis_u, vec3 axis_v, bool two_sided",
          "center, axis_u, axis_v, two_sided",
-         {"ellipse_record.glsl", "spin_polygon.glsl", "library_disk.glsl"}, "vertices[0], vertices[1], vertices[2], two_sided",
+         {"light/ellipse_record.glsl", "light/spin_polygon.glsl", "library/disk.glsl"}, "vertices[0], vertices[1], vertices[2], two_sided",
          "disk or ellipse with orthogonal semi-axes axis_u, axis_v, emitting towards axis_u x "
          "axis_v (both sides if two_sided)"},
         {LightType::Sphere, "vec3 center, float radius", "center, radius",
-         {"ellipse_record.glsl", "spin_polygon.glsl", "library_sphere.glsl"}, "vertices[0], vertices[1].x",
+         {"light/ellipse_record.glsl", "light/spin_polygon.glsl", "library/sphere.glsl"}, "vertices[0], vertices[1].x",
          "sphere of radius > 0, p outside it"},
         {LightType::Ellipsoid, "vec3 center, vec3 axes[3]", "center, axes",
-         {"ellipse_record.glsl", "spin_polygon.glsl", "library_ellipsoid.glsl"}, "vertices[0], axes",
+         {"light/ellipse_record.glsl", "light/spin_polygon.glsl", "library/ellipsoid.glsl"}, "vertices[0], axes",
          "ellipsoid with orthogonal semi-axes, p outside it"},
     };
     return rows;
@@ -147,7 +147,7 @@ void emit_defines(std::string& out, const Variant& v) {
     for (const auto& [name, value] : variant_defines(v)) {
         out += fmt::format("#define {} {}\n", name, value);
     }
-    // The curved lights share one record (templates/ellipse_record.glsl).
+    // The curved lights share one record (templates/light/ellipse_record.glsl).
     if (v.light != LightType::Polygon) out += "#define AL_LIGHT_CURVED 1\n";
 }
 
@@ -268,7 +268,7 @@ void emit_template(std::string& out, const std::string& path, const TemplateLook
 // The templates of a variant's chunk, in order: shared math, the family's list
 // (generator/variant.cpp), the light's library entry.
 std::vector<std::string> chunk_templates(const Variant& v) {
-    std::vector<std::string> files = {"templates/common.glsl"};
+    std::vector<std::string> files = {"templates/common/common.glsl"};
     for (const auto& name : variant_family_templates(v)) files.push_back("templates/" + name);
     if (const LightEntry* light = find_light(v.light))
         for (const auto& t : light->library_templates) files.push_back("templates/" + t);
@@ -299,7 +299,7 @@ void emit_public_function(std::string& out, const Variant& v, const LibraryOptio
     // The peak-function methods of Lecocq et al. are patented (README.md, Patent notice).
     if (is_peak_method(v.method))
         out += "// Patent: the peak-function method of Lecocq et al. is covered by US 10,607,404; "
-               "see README.md.\n";
+               "see arealight's README.md, Patent notice.\n";
     out += fmt::format("ArealightShading {}(ArealightSurface s, {}) {{\n",
                        library_function_name(v), light->params);
     out += fmt::format("    vec4 q = al_{}_evaluate(s, {});\n", to_string(v.light), light->args);
@@ -326,9 +326,9 @@ std::string sampler_binding_macro(const Variant& v, const std::string& sampler) 
 }
 
 std::vector<std::string> variant_templates(const Variant& v, Language lang) {
-    std::vector<std::string> files = {"templates/library_types.glsl"};
+    std::vector<std::string> files = {"templates/library/types.glsl"};
     for (auto& f : chunk_templates(v)) files.push_back(std::move(f));
-    if (lang == Language::Glsl && find_light(v.light)) files.push_back("templates/kernel.glsl");
+    if (lang == Language::Glsl && find_light(v.light)) files.push_back("templates/library/kernel.glsl");
     return files;
 }
 
@@ -364,7 +364,7 @@ void emit_library(std::string& out, const std::vector<Variant>& variants, Langua
             }
         }
     }
-    emit_template(out, "templates/library_types.glsl", lookup, "");
+    emit_template(out, "templates/library/types.glsl", lookup, "");
     const std::vector<LibrarySampler> plan = library_samplers(variants);
     if (lang == Language::Glsl) emit_table_slots(out, variants, plan);
     for (std::size_t vi = 0; vi < variants.size(); ++vi) {
@@ -490,7 +490,7 @@ void emit_kernel_entry(std::string& out, const Variant& v, KernelOutputs outputs
                        library_rename(fmt::format("al_{}_evaluate", to_string(v.light)), v));
     out += fmt::format("#define AL_KERNEL_ARGS {}\n", light->kernel_args);
     if (outputs == KernelOutputs::All) out += "#define AL_KERNEL_SECOND 1\n";
-    emit_template(out, "templates/kernel.glsl", lookup, "f");
+    emit_template(out, "templates/library/kernel.glsl", lookup, "f");
 }
 
 }  // namespace

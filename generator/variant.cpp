@@ -182,32 +182,32 @@ std::vector<KeyRow> key_rows() {
             "fp16: half-precision edge integrals and horizon, method=ltc)")
             .unused_as("fp32"),
         key("fit",                &Variant::fit,         kFits,          flag("AL_FIT_PAPER", "paper"),
-            "peak-function fitting recipe: tuned (ours) or paper (seed 000 as printed)"),
+            "peak-function fitting recipe: tuned (ours) or paper (Lecocq et al. 2016 as printed)"),
         key("specular",           &Variant::specular,    kSpecularForms, flag("AL_SPECULAR_SG", "sg"),
             "double-axis moment: twoaxis (Arvo's relation) or sg (spherical Gaussians)"),
         key("radial",             &Variant::radial,      {2, 4, 16},     number("AL_RADIAL"),
             "radial Gauss-Legendre nodes of the exact microfacet specular rule"),
         key("split",              &Variant::split,       kSplits,        one_hot("AL_SPLIT_"),
             "microfacet peak methods: edge splits before the half-vector map: none, single "
-            "(seed 000 Algorithm 1) or halved (its point, then each piece halved)"),
+            "(Lecocq et al. 2016, Algorithm 1) or halved (its point, then each piece halved)"),
         key("factor",             &Variant::factor,      kFactors,       one_hot("AL_FACTOR_"),
             "microfacet peak methods: half vector of the specular factor: closest (to n) or "
             "blend (with the vector irradiance's, by solid angle against the lobe's)"),
         key("horizon",            &Variant::horizon,     kHorizons,      one_hot("AL_HORIZON_"),
-            "method=ltc: clip the transformed polygon to the horizon, or proxy (seed 001: "
+            "method=ltc: clip the transformed polygon to the horizon, or proxy (Hill 2016: "
             "a sphere with the same vector form factor, clipped by table)"),
         key("edge",               &Variant::edge,        kEdges,         one_hot("AL_EDGE_"),
             "method=ltc: edge integral theta / sin(theta) by acos, or poly (a polynomial "
-            "in cos(theta), seed 001)"),
+            "in cos(theta), from the mobile LTC article)"),
         key("table",              &Variant::table,       kTables,        flag("AL_TABLE_FIT", "fit"),
             "method=ltc: coefficients from the fitted tables (texture, sampled bilinearly) or "
             "closed-form polynomials fitted to them (fit: no table, no sampler)"),
         key("proxy",              &Variant::proxy,       {4, 16},         number("AL_MAX_VERTS"),
             "curved lights through a polygon method: sides of the spinning proxy polygon "
-            "(seed 000 section 9)"),
+            "(Lecocq et al. 2016 section 9)"),
         key("orient",             &Variant::orient,      kOrients,       one_hot("AL_ORIENT_"),
             "curved lights through a polygon method: the proxy's turn per shading point: rim "
-            "(area-matched, an edge crossing the rim under the mirror ray) or paper (seed 000 "
+            "(area-matched, an edge crossing the rim under the mirror ray) or paper (Lecocq et al. 2016 "
             "Algorithm 3, typos corrected)"),
     };
     // clang-format on
@@ -217,7 +217,7 @@ std::vector<KeyRow> key_rows() {
 // keys the family uses, each with the values enumerated for it, which are exactly
 // the values valid for it ({} = every value of the key); a key it does not name
 // stays at its default. templates: what it stitches, in order, between
-// templates/common.glsl and (GLSL only) templates/entry.glsl. Boundary-integral
+// templates/common/common.glsl and (GLSL only) templates/entry.glsl. Boundary-integral
 // methods share the per-arc geometry (<dist>_edge), then integrate each edge their
 // own way; all but arvo (its own recurrence and accumulator) share the accumulator
 // (<dist>_boundary); the polygon's clipping streams arcs into it, so it comes after.
@@ -230,96 +230,96 @@ std::vector<VariantFamily> family_rows() {
         // dist     method        light       keys ({} = all values)
         //   templates
         {D::Phong, M::Exact,     L::Polygon, {{"sided"}, {"verts"}, {"nodes", {"8", "12", "16", "24"}}, {"precision", {"fp64", "fp32"}}},
-            {"dist_phong.glsl", "phong_edge.glsl", "phong_edge_rule.glsl", "method_exact_phong.glsl", "phong_boundary.glsl",
-             "polygon.glsl", "light_polygon.glsl"}},
+            {"dist/phong.glsl", "method/phong_edge.glsl", "method/phong_edge_rule.glsl", "method/exact_phong.glsl", "method/phong_boundary.glsl",
+             "light/polygon.glsl", "light/polygon_methods.glsl"}},
         {D::Phong, M::Arvo,      L::Polygon, {{"sided"}, {"verts"}},
-            {"dist_phong.glsl", "phong_edge.glsl", "method_arvo_phong.glsl",
-             "polygon.glsl", "light_polygon.glsl"}},
+            {"dist/phong.glsl", "method/phong_edge.glsl", "method/arvo_phong.glsl",
+             "light/polygon.glsl", "light/polygon_methods.glsl"}},
         {D::Phong, M::Lorentz,   L::Polygon, {{"sided"}, {"verts"}, {"fit"}, {"specular"}},
-            {"dist_phong.glsl", "phong_edge.glsl", "gauss_legendre8.glsl", "phong_edge_rule.glsl", "method_peak_phong.glsl",
-             "peak_lobe_edge.glsl", "phong_boundary.glsl",
-             "polygon.glsl", "light_polygon.glsl"}},
+            {"dist/phong.glsl", "method/phong_edge.glsl", "common/gauss_legendre8.glsl", "method/phong_edge_rule.glsl", "method/peak_phong.glsl",
+             "method/peak_lobe_edge.glsl", "method/phong_boundary.glsl",
+             "light/polygon.glsl", "light/polygon_methods.glsl"}},
         {D::Phong, M::Pearson,   L::Polygon, {{"sided"}, {"verts"}, {"fit"}, {"specular"}},
-            {"dist_phong.glsl", "phong_edge.glsl", "gauss_legendre8.glsl", "phong_edge_rule.glsl", "method_peak_phong.glsl",
-             "peak_lobe_edge.glsl", "phong_boundary.glsl",
-             "polygon.glsl", "light_polygon.glsl"}},
+            {"dist/phong.glsl", "method/phong_edge.glsl", "common/gauss_legendre8.glsl", "method/phong_edge_rule.glsl", "method/peak_phong.glsl",
+             "method/peak_lobe_edge.glsl", "method/phong_boundary.glsl",
+             "light/polygon.glsl", "light/polygon_methods.glsl"}},
         {D::Phong, M::Ellipsoid, L::Polygon, {{"sided"}, {"verts"}, {"fit"}, {"specular"}},
-            {"dist_phong.glsl", "phong_edge.glsl", "gauss_legendre8.glsl", "phong_edge_rule.glsl", "method_peak_phong.glsl",
-             "peak_lobe_edge.glsl", "phong_boundary.glsl",
-             "polygon.glsl", "light_polygon.glsl"}},
+            {"dist/phong.glsl", "method/phong_edge.glsl", "common/gauss_legendre8.glsl", "method/phong_edge_rule.glsl", "method/peak_phong.glsl",
+             "method/peak_lobe_edge.glsl", "method/phong_boundary.glsl",
+             "light/polygon.glsl", "light/polygon_methods.glsl"}},
         {D::Phong, M::Point,     L::Polygon, {{"sided"}, {"verts"}},
-            {"dist_phong.glsl", "point_light.glsl", "polygon.glsl", "light_polygon.glsl"}, {}, false},
+            {"dist/phong.glsl", "light/point_light.glsl", "light/polygon.glsl", "light/polygon_methods.glsl"}, {}, false},
         {D::Blinn, M::Exact, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"nodes", {"2", "3", "16"}}, {"precision", {"fp64", "fp32"}}, {"radial", {"2", "16"}}},
-            {"dist_blinn.glsl", "microfacet.glsl", "blinn_radial.glsl", "peak_rule.glsl", "method_exact_microfacet.glsl",
-             "polygon.glsl",
-             "light_polygon.glsl"}},
+            {"dist/blinn.glsl", "dist/microfacet.glsl", "dist/blinn_radial.glsl", "method/peak_rule.glsl", "method/exact_microfacet.glsl",
+             "light/polygon.glsl",
+             "light/polygon_methods.glsl"}},
         {D::Blinn, M::Point, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}},
-            {"dist_blinn.glsl", "microfacet.glsl", "microfacet_brdf.glsl", "point_light.glsl", "polygon.glsl", "light_polygon.glsl"}, {}, false},
+            {"dist/blinn.glsl", "dist/microfacet.glsl", "dist/microfacet_brdf.glsl", "light/point_light.glsl", "light/polygon.glsl", "light/polygon_methods.glsl"}, {}, false},
         {D::Beckmann, M::Exact, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"nodes", {"2", "3", "16"}}, {"precision", {"fp64", "fp32"}}, {"radial", {"2", "16"}}},
-            {"dist_beckmann.glsl", "microfacet.glsl", "beckmann_radial.glsl", "peak_rule.glsl", "method_exact_microfacet.glsl",
-             "polygon.glsl",
-             "light_polygon.glsl"}},
+            {"dist/beckmann.glsl", "dist/microfacet.glsl", "dist/beckmann_radial.glsl", "method/peak_rule.glsl", "method/exact_microfacet.glsl",
+             "light/polygon.glsl",
+             "light/polygon_methods.glsl"}},
         {D::Beckmann, M::Point, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}},
-            {"dist_beckmann.glsl", "microfacet.glsl", "microfacet_brdf.glsl", "point_light.glsl", "polygon.glsl", "light_polygon.glsl"}, {}, false},
+            {"dist/beckmann.glsl", "dist/microfacet.glsl", "dist/microfacet_brdf.glsl", "light/point_light.glsl", "light/polygon.glsl", "light/polygon_methods.glsl"}, {}, false},
         {D::Ggx, M::Exact, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"nodes", {"2", "3", "16"}}, {"precision", {"fp64", "fp32"}}, {"radial", {"2", "16"}}},
-            {"dist_ggx.glsl", "microfacet.glsl", "ggx_radial.glsl", "peak_rule.glsl", "method_exact_microfacet.glsl",
-             "polygon.glsl",
-             "light_polygon.glsl"}},
+            {"dist/ggx.glsl", "dist/microfacet.glsl", "dist/ggx_radial.glsl", "method/peak_rule.glsl", "method/exact_microfacet.glsl",
+             "light/polygon.glsl",
+             "light/polygon_methods.glsl"}},
         {D::Ggx, M::Point, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}},
-            {"dist_ggx.glsl", "microfacet.glsl", "microfacet_brdf.glsl", "point_light.glsl", "polygon.glsl", "light_polygon.glsl"}, {}, false},
+            {"dist/ggx.glsl", "dist/microfacet.glsl", "dist/microfacet_brdf.glsl", "light/point_light.glsl", "light/polygon.glsl", "light/polygon_methods.glsl"}, {}, false},
         {D::Blinn, M::Lorentz, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"fit", {"tuned"}}, {"split", {"single", "halved"}}, {"factor"}},
-            {"dist_blinn.glsl", "microfacet.glsl", "phong_edge.glsl", "method_peak_phong.glsl", "method_peak_microfacet.glsl",
-             "polygon.glsl", "light_polygon.glsl"}},
+            {"dist/blinn.glsl", "dist/microfacet.glsl", "method/phong_edge.glsl", "method/peak_phong.glsl", "method/peak_microfacet.glsl",
+             "light/polygon.glsl", "light/polygon_methods.glsl"}},
         {D::Blinn, M::Pearson, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"fit", {"tuned"}}, {"split", {"single", "halved"}}, {"factor"}},
-            {"dist_blinn.glsl", "microfacet.glsl", "phong_edge.glsl", "method_peak_phong.glsl", "method_peak_microfacet.glsl",
-             "polygon.glsl", "light_polygon.glsl"}},
+            {"dist/blinn.glsl", "dist/microfacet.glsl", "method/phong_edge.glsl", "method/peak_phong.glsl", "method/peak_microfacet.glsl",
+             "light/polygon.glsl", "light/polygon_methods.glsl"}},
         {D::Blinn, M::Ellipsoid, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"fit", {"tuned"}}, {"split", {"single", "halved"}}, {"factor"}},
-            {"dist_blinn.glsl", "microfacet.glsl", "phong_edge.glsl", "method_peak_phong.glsl", "method_peak_microfacet.glsl",
-             "polygon.glsl", "light_polygon.glsl"}},
+            {"dist/blinn.glsl", "dist/microfacet.glsl", "method/phong_edge.glsl", "method/peak_phong.glsl", "method/peak_microfacet.glsl",
+             "light/polygon.glsl", "light/polygon_methods.glsl"}},
         {D::Beckmann, M::Lorentz, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"fit", {"tuned"}}, {"split", {"single", "halved"}}, {"factor"}},
-            {"dist_beckmann.glsl", "microfacet.glsl", "phong_edge.glsl", "method_peak_phong.glsl", "method_peak_microfacet.glsl",
-             "polygon.glsl", "light_polygon.glsl"}},
+            {"dist/beckmann.glsl", "dist/microfacet.glsl", "method/phong_edge.glsl", "method/peak_phong.glsl", "method/peak_microfacet.glsl",
+             "light/polygon.glsl", "light/polygon_methods.glsl"}},
         {D::Beckmann, M::Pearson, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"fit", {"tuned"}}, {"split", {"single", "halved"}}, {"factor"}},
-            {"dist_beckmann.glsl", "microfacet.glsl", "phong_edge.glsl", "method_peak_phong.glsl", "method_peak_microfacet.glsl",
-             "polygon.glsl", "light_polygon.glsl"}},
+            {"dist/beckmann.glsl", "dist/microfacet.glsl", "method/phong_edge.glsl", "method/peak_phong.glsl", "method/peak_microfacet.glsl",
+             "light/polygon.glsl", "light/polygon_methods.glsl"}},
         {D::Beckmann, M::Ellipsoid, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"fit", {"tuned"}}, {"split", {"single", "halved"}}, {"factor"}},
-            {"dist_beckmann.glsl", "microfacet.glsl", "phong_edge.glsl", "method_peak_phong.glsl", "method_peak_microfacet.glsl",
-             "polygon.glsl", "light_polygon.glsl"}},
+            {"dist/beckmann.glsl", "dist/microfacet.glsl", "method/phong_edge.glsl", "method/peak_phong.glsl", "method/peak_microfacet.glsl",
+             "light/polygon.glsl", "light/polygon_methods.glsl"}},
         {D::Ggx, M::Lorentz, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"fit", {"tuned"}}, {"split", {"single", "halved"}}, {"factor"}},
-            {"dist_ggx.glsl", "microfacet.glsl", "phong_edge.glsl", "method_peak_phong.glsl", "method_peak_microfacet.glsl",
-             "polygon.glsl", "light_polygon.glsl"}},
+            {"dist/ggx.glsl", "dist/microfacet.glsl", "method/phong_edge.glsl", "method/peak_phong.glsl", "method/peak_microfacet.glsl",
+             "light/polygon.glsl", "light/polygon_methods.glsl"}},
         {D::Ggx, M::Pearson, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"fit", {"tuned"}}, {"split", {"single", "halved"}}, {"factor"}},
-            {"dist_ggx.glsl", "microfacet.glsl", "phong_edge.glsl", "method_peak_phong.glsl", "method_peak_microfacet.glsl",
-             "polygon.glsl", "light_polygon.glsl"}},
+            {"dist/ggx.glsl", "dist/microfacet.glsl", "method/phong_edge.glsl", "method/peak_phong.glsl", "method/peak_microfacet.glsl",
+             "light/polygon.glsl", "light/polygon_methods.glsl"}},
         {D::Ggx, M::Ellipsoid, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"fit", {"tuned"}}, {"split", {"single", "halved"}}, {"factor"}},
-            {"dist_ggx.glsl", "microfacet.glsl", "phong_edge.glsl", "method_peak_phong.glsl", "method_peak_microfacet.glsl",
-             "polygon.glsl", "light_polygon.glsl"}},
-        // LTC (seed 001): fitted tables sampled as textures (data/ltc/, arealight fit-ltc).
+            {"dist/ggx.glsl", "dist/microfacet.glsl", "method/phong_edge.glsl", "method/peak_phong.glsl", "method/peak_microfacet.glsl",
+             "light/polygon.glsl", "light/polygon_methods.glsl"}},
+        // LTC (Heitz et al. 2016): fitted tables sampled as textures (data/ltc/, arealight fit-ltc).
         {D::Phong, M::Ltc, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"precision", {"fp32", "fp16"}, "fp32"}, {"horizon"}, {"edge"}},
-            {"polygon.glsl", "method_ltc.glsl"}, {"al_ltc_matrix", "al_ltc_amplitude"}, false},
+            {"light/polygon.glsl", "method/ltc.glsl"}, {"al_ltc_matrix", "al_ltc_amplitude"}, false},
         {D::Blinn, M::Ltc, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"precision", {"fp32", "fp16"}, "fp32"}, {"horizon"}, {"edge"}},
-            {"polygon.glsl", "method_ltc.glsl"}, {"al_ltc_matrix", "al_ltc_amplitude"}, false},
+            {"light/polygon.glsl", "method/ltc.glsl"}, {"al_ltc_matrix", "al_ltc_amplitude"}, false},
         {D::Beckmann, M::Ltc, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"precision", {"fp32", "fp16"}, "fp32"}, {"horizon"}, {"edge"}},
-            {"polygon.glsl", "method_ltc.glsl"}, {"al_ltc_matrix", "al_ltc_amplitude"}, false},
-        // GGX also without tables: table=fit (templates/ltc_ggx_fit.glsl, scripts/fit_ltc_ggx_closed.py).
+            {"light/polygon.glsl", "method/ltc.glsl"}, {"al_ltc_matrix", "al_ltc_amplitude"}, false},
+        // GGX also without tables: table=fit (templates/method/ltc_ggx_fit.glsl, scripts/fit_ltc_ggx_closed.py).
         {D::Ggx, M::Ltc, L::Polygon, {{"sided", {"any"}}, {"verts", {"8"}}, {"precision", {"fp32", "fp16"}, "fp32"}, {"horizon"}, {"edge"}, {"table"}},
-            {"polygon.glsl", "method_ltc.glsl"}, {"al_ltc_matrix", "al_ltc_amplitude"}, false,
-            {{"table", "fit", {"ltc_ggx_fit.glsl"}, true}}},
+            {"light/polygon.glsl", "method/ltc.glsl"}, {"al_ltc_matrix", "al_ltc_amplitude"}, false,
+            {{"table", "fit", {"method/ltc_ggx_fit.glsl"}, true}}},
     };
     // clang-format on
 }
 
-// Curved lights (disk, sphere, ellipsoid; seed 000 section 9). Each light's library
-// entry reduces it to an ellipse (templates/ellipse_record.glsl); a polygon method
+// Curved lights (disk, sphere, ellipsoid; Lecocq et al. 2016 section 9). Each light's library
+// entry reduces it to an ellipse (templates/light/ellipse_record.glsl); a polygon method
 // then shades the spinning proxy polygon of that ellipse, so its family is the
 // polygon family's row with the polygon keys (sided, verts) replaced by the proxy's
 // (proxy, orient) and every other key held at its default. Phong offers the
 // paper's form (proxy=4, orient=paper) beside ours; the microfacet methods only
 // the default, which is what their error is measured for. The point baseline has
 // its own template: the ellipse's centre and solid angle. LTC shades the ellipse
-// itself (Heitz & Hill 2017: a linear map keeps it an ellipse; templates/ltc_ellipse.glsl)
+// itself (Heitz & Hill 2017: a linear map keeps it an ellipse; templates/method/ltc_ellipse.glsl)
 // with the polygon LTC's tables, so it takes no proxy keys and no edge key. The exact
-// methods shade the ellipse itself too (ellipse_clip.glsl, light_ellipse.glsl).
+// methods shade the ellipse itself too (light/ellipse_clip.glsl, light/ellipse.glsl).
 std::vector<VariantFamily> curved_rows(const std::vector<VariantFamily>& polygon_rows,
                                        const std::vector<KeyRow>& keys) {
     using L = LightType;
@@ -339,20 +339,20 @@ std::vector<VariantFamily> curved_rows(const std::vector<VariantFamily>& polygon
             f.light = light;
             f.keys.clear();
             if (row.method == Method::Exact) {
-                // The light's true boundary, clipped in closed form (ellipse_clip.glsl), at
+                // The light's true boundary, clipped in closed form (light/ellipse_clip.glsl), at
                 // the polygon family's default keys but precision (CI compiles every
                 // variant).
                 f.templates.clear();
                 for (const auto& t : row.templates) {
-                    if (t == "light_polygon.glsl" || t == "peak_rule.glsl") continue;
-                    if (t.rfind("method_exact_", 0) == 0) {
-                        f.templates.push_back("conic.glsl");
-                        f.templates.push_back("peak_rule.glsl");
+                    if (t == "light/polygon_methods.glsl" || t == "method/peak_rule.glsl") continue;
+                    if (t.rfind("method/exact_", 0) == 0) {
+                        f.templates.push_back("light/conic.glsl");
+                        f.templates.push_back("method/peak_rule.glsl");
                     }
                     f.templates.push_back(t);
                 }
-                f.templates.push_back("ellipse_clip.glsl");
-                f.templates.push_back("light_ellipse.glsl");
+                f.templates.push_back("light/ellipse_clip.glsl");
+                f.templates.push_back("light/ellipse.glsl");
                 // fp32 beside the fp64 reference: what a GPU runs (fp64 is 1/16 rate or
                 // less there) and what a scene's default quality may choose.
                 for (const auto& k : row.keys) {
@@ -369,13 +369,13 @@ std::vector<VariantFamily> curved_rows(const std::vector<VariantFamily>& polygon
             if (row.method == Method::Point) {
                 f.templates.clear();
                 for (const auto& t : row.templates)
-                    if (t != "polygon.glsl" && t != "light_polygon.glsl") f.templates.push_back(t);
-                f.templates.push_back("point_curved.glsl");
+                    if (t != "light/polygon.glsl" && t != "light/polygon_methods.glsl") f.templates.push_back(t);
+                f.templates.push_back("light/point_curved.glsl");
                 out.push_back(std::move(f));
                 continue;
             }
             if (row.method == Method::Ltc) {
-                f.templates = {"method_ltc.glsl", "ellipse_cone.glsl", "ltc_ellipse.glsl"};
+                f.templates = {"method/ltc.glsl", "light/ellipse_cone.glsl", "method/ltc_ellipse.glsl"};
                 f.keys = {FamilyKey("precision", {"fp32"}, "fp32"), FamilyKey("horizon")};
                 // table=fit replaces the lookup and the proxy's table, which the
                 // ellipse shares (its parts come with the row).
@@ -397,11 +397,11 @@ std::vector<VariantFamily> curved_rows(const std::vector<VariantFamily>& polygon
     return out;
 }
 
-// Representative-point shading (templates/method_mrp.glsl): every distribution and light,
+// Representative-point shading (templates/method/mrp.glsl): every distribution and light,
 // at one shape (sided=any, verts=8 for polygons; no key for curved lights), without the
 // second quantity (ndf, moment), as the point baselines and ltc. Polygons stream the
-// clipped boundary into the vector form factor (vector_form_factor.glsl, polygon.glsl);
-// curved lights take their ellipse record's cone (ellipse_cone.glsl).
+// clipped boundary into the vector form factor (common/vector_form_factor.glsl, light/polygon.glsl);
+// curved lights take their ellipse record's cone (light/ellipse_cone.glsl).
 std::vector<VariantFamily> mrp_rows() {
     using D = Distribution;
     using L = LightType;
@@ -410,20 +410,20 @@ std::vector<VariantFamily> mrp_rows() {
         for (D dist : kDists) {
             VariantFamily f{dist, Method::Mrp, light, {}, {}, {}, false};
             if (dist == D::Phong) {
-                f.templates = {"dist_phong.glsl"};
+                f.templates = {"dist/phong.glsl"};
             } else {
-                f.templates = {std::string("dist_") + to_string(dist) + ".glsl", "microfacet.glsl",
-                               "microfacet_brdf.glsl"};
+                f.templates = {std::string("dist/") + to_string(dist) + ".glsl", "dist/microfacet.glsl",
+                               "dist/microfacet_brdf.glsl"};
             }
-            f.templates.push_back("point_light.glsl");
+            f.templates.push_back("light/point_light.glsl");
             if (light == L::Polygon) {
                 f.keys = {FamilyKey("sided", {"any"}), FamilyKey("verts", {"8"})};
-                f.templates.push_back("vector_form_factor.glsl");
-                f.templates.push_back("polygon.glsl");
+                f.templates.push_back("common/vector_form_factor.glsl");
+                f.templates.push_back("light/polygon.glsl");
             } else {
-                f.templates.push_back("ellipse_cone.glsl");
+                f.templates.push_back("light/ellipse_cone.glsl");
             }
-            f.templates.push_back("method_mrp.glsl");
+            f.templates.push_back("method/mrp.glsl");
             out.push_back(std::move(f));
         }
     }

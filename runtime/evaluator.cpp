@@ -53,7 +53,7 @@ std::vector<float> pack_cases(const std::vector<const Case*>& cases) {
         // Schlick f0 (CONTRACT.md 2); 1 when the case has none, which makes F = 1 exactly.
         o[13] = static_cast<float>(m.f0);
         o[14] = c.light.two_sided ? 1.0f : 0.0f;
-        // The light's slots (templates/kernel.glsl): a polygon's vertices, or a curved
+        // The light's slots (templates/library/kernel.glsl): a polygon's vertices, or a curved
         // light's centre and then its vectors.
         float* slots = o + 16;
         const Light& l = c.light;

@@ -6,7 +6,7 @@ for x < 0 (theta/sin = pi / sqrt(1 - x^2) - p(|x|)). Measured here: its largest
 relative error on [0, 1) is 1.15e-2, and p(1) = 1.0115, so every small edge (x -> 1)
 is 1.15% too large. This script fits the same three-coefficient quadratic for the
 smallest largest relative error with p(1) = 1 (exact for small edges), by Nelder-Mead
-on a 4001-point grid; it prints the coefficients used in templates/method_ltc.glsl
+on a 4001-point grid; it prints the coefficients used in templates/method/ltc.glsl
 and both fits' errors.
 
 Usage: python3 scripts/fit_edge_poly.py      (pure Python, deterministic, ~10 s)

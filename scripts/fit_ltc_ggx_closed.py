@@ -3,7 +3,7 @@
 
 Reads data/ltc/ltc_ggx.txt (64 x 64 cells, columns i j a b c d A B error; grid of
 include/arealight/ltc_table.hpp: u = i / 63 over rho = sqrt(alpha), w = j / 63 with
-cos theta_v = 1 - w^2) and writes templates/ltc_ggx_fit.glsl, the functions that
+cos theta_v = 1 - w^2) and writes templates/method/ltc_ggx_fit.glsl, the functions that
 method=ltc,table=fit evaluates instead of sampling the two textures.
 
 The matrix Minv = [[a, 0, b], [0, c, 0], [d, 0, 1]] is not fitted coefficient by
@@ -32,7 +32,7 @@ squares with Huber reweighting (3 passes, k = 1.5 MAD: the grazing rows' scatter
 cells do not pull the fit), then written in the power basis of x and y (Horner, fp32).
 
 Usage: python3 scripts/fit_ltc_ggx_closed.py   (standard library only, ~1 min)
-writes templates/ltc_ggx_fit.glsl and prints each quantity's fit error.
+writes templates/method/ltc_ggx_fit.glsl and prints each quantity's fit error.
 """
 import math
 import os
@@ -40,7 +40,7 @@ import struct
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TABLE = "data/ltc/ltc_ggx.txt"
-OUT = "templates/ltc_ggx_fit.glsl"
+OUT = "templates/method/ltc_ggx_fit.glsl"
 SIZE = 64
 JMAX = 62
 NU, NW = 9, 12

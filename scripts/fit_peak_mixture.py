@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Fits GGX's D by the moment mixture of templates/method_peak_microfacet.glsl
+"""Fits GGX's D by the moment mixture of templates/method/peak_microfacet.glsl
 (fit=tuned) and prints the template's tables.
 
 D_GGX(theta; alpha) ~ c0/pi + sum_j w_j (N_j + 2)/(2 pi) cos^N_j(theta), j = 1..3,

@@ -4,8 +4,8 @@
 Usage: proxy_polygon_cases.py IN.cases.json OUT.cases.json [--sides K] [--lights L,...]
 
 For every disk, sphere or ellipsoid case of IN, the regular K-gon that
-templates/spin_polygon.glsl shades at that point with orient=rim (the ellipse of
-ellipse_record.glsl: a disk itself, a sphere's or an ellipsoid's silhouette; the
+templates/light/spin_polygon.glsl shades at that point with orient=rim (the ellipse of
+light/ellipse_record.glsl: a disk itself, a sphere's or an ellipsoid's silhouette; the
 polygon's area the ellipse's, one edge crossing the rim where the line of the
 mirror ray meets the light's plane), as a two-sided polygon light with the same
 p, n, v and material. K <= 8 gives one case per light with the same id; a larger
@@ -83,7 +83,7 @@ def proxy(case, k):
     if e is None:
         return None
     C, U, V = e
-    if dot(cross(U, V), C) < 0:  # ellipse_record.glsl: W = unit(U x V) points away from p
+    if dot(cross(U, V), C) < 0:  # light/ellipse_record.glsl: W = unit(U x V) points away from p
         V = mul(-1.0, V)
     UxV = cross(U, V)
     area = norm(UxV)

@@ -1,6 +1,6 @@
 // Curved lights (disk, sphere, ellipsoid; CONTRACT.md 1): the library entries'
-// reduction to an ellipse (templates/ellipse_record.glsl, library_<light>.glsl),
-// the point baseline, and the spinning proxy polygon (spin_polygon.glsl), each test
+// reduction to an ellipse (templates/light/ellipse_record.glsl, library_<light>.glsl),
+// the point baseline, and the spinning proxy polygon (light/spin_polygon.glsl), each test
 // body run over both backends.
 #include <algorithm>
 #include <catch2/catch.hpp>
@@ -115,7 +115,7 @@ const char* kSameLightVariants[] = {"dist=phong,method=point,light=", "dist=ggx,
                                     "dist=phong,method=exact,light=",
                                     "dist=ggx,method=exact,light="};
 
-// The proxy square of spin_polygon.glsl built here from its header's description alone
+// The proxy square of light/spin_polygon.glsl built here from its header's description alone
 // (double precision, no template code): the light's ellipse (library_<light>.glsl: a
 // disk itself, a sphere's or ellipsoid's silhouette in the polar plane of p) as centre C
 // and conjugate semi-diameters U, V relative to p; then the regular 4-gon in the frame
@@ -167,7 +167,7 @@ bool proxy_square(const Case& c, bool paper, Case& out) {
         default:
             return false;
     }
-    // ellipse_record.glsl's orientation: V's sign makes W = unit(U x V) point away
+    // light/ellipse_record.glsl's orientation: V's sign makes W = unit(U x V) point away
     // from p. It matters: the rim rule is not mirror-symmetric.
     if (glm::dot(glm::cross(U, V), C) < 0) V = -V;
     // (a, b, h): x - p = C + a U + b V + h W.

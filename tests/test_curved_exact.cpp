@@ -212,7 +212,7 @@ TEST_CASE("exact curved lights: a sphere almost touching p under wide microfacet
     // its silhouette cone, the view at n.v = 0.64: the lobe's approaches, the fold and
     // p's nearest rim point share parts of the boundary, so the rule's sub-parts must
     // come out in order. lavapipe once returned 0 here for every lobe wider than
-    // alpha ~ 0.55 (an insertion sort at run-time indices in conic.glsl lost an entry)
+    // alpha ~ 0.55 (an insertion sort at run-time indices in light/conic.glsl lost an entry)
     // while the CPU mirror was right; both are held to the exact methods' bar.
     const glm::dvec3 n =
         glm::normalize(glm::dvec3(0.898955762386322, -0.43237701058387756, 0.0702042430639267));

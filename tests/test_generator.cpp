@@ -65,7 +65,7 @@ TEST_CASE("every template chunk is bracketed by #line markers", "[generator]") {
 
 TEST_CASE("a broken template is reported at its file and line, with the variant", "[generator]") {
     const Variant v = parse("dist=phong,method=exact,light=polygon");
-    std::string broken = *template_text("templates/dist_phong.glsl");
+    std::string broken = *template_text("templates/dist/phong.glsl");
     // Line 4 of the template becomes an undeclared identifier.
     auto lines = lines_of(broken);
     REQUIRE(lines.size() > 5);
@@ -73,14 +73,14 @@ TEST_CASE("a broken template is reported at its file and line, with the variant"
     broken.clear();
     for (auto& l : lines) broken += l + "\n";
     const std::string glsl = generate_source(v, Language::Glsl, [&](const std::string& path) {
-        return path == "templates/dist_phong.glsl" ? &broken : template_text(path);
+        return path == "templates/dist/phong.glsl" ? &broken : template_text(path);
     });
     std::vector<Diagnostic> diags;
     auto spv = build_spirv(v, glsl, true, [&](const Diagnostic& d) { diags.push_back(d); });
     CHECK_FALSE(spv);
     REQUIRE_FALSE(diags.empty());
     INFO("first diagnostic: " << diags[0].file << ":" << diags[0].line << ": " << diags[0].message);
-    CHECK(diags[0].file == "templates/dist_phong.glsl");
+    CHECK(diags[0].file == "templates/dist/phong.glsl");
     CHECK(diags[0].line == 4);
     CHECK(diags[0].message.find("dist=phong,method=exact,light=polygon") != std::string::npos);
     CHECK(diags[0].message.find("undeclared_thing") != std::string::npos);
@@ -107,26 +107,26 @@ TEST_CASE("a variant stitches the library types, common, its family's templates,
     const auto exact =
         variant_templates(parse("dist=phong,method=exact,light=polygon"), Language::Glsl);
     CHECK(exact == std::vector<std::string>{
-                       "templates/library_types.glsl", "templates/common.glsl",
-                       "templates/dist_phong.glsl", "templates/phong_edge.glsl",
-                       "templates/phong_edge_rule.glsl", "templates/method_exact_phong.glsl",
-                       "templates/phong_boundary.glsl",
-                       "templates/polygon.glsl", "templates/light_polygon.glsl",
-                       "templates/library_polygon.glsl", "templates/kernel.glsl"});
+                       "templates/library/types.glsl", "templates/common/common.glsl",
+                       "templates/dist/phong.glsl", "templates/method/phong_edge.glsl",
+                       "templates/method/phong_edge_rule.glsl", "templates/method/exact_phong.glsl",
+                       "templates/method/phong_boundary.glsl",
+                       "templates/light/polygon.glsl", "templates/light/polygon_methods.glsl",
+                       "templates/library/polygon.glsl", "templates/library/kernel.glsl"});
     CHECK(variant_templates(parse("dist=phong,method=arvo,light=polygon,verts=3"), Language::Cpp) ==
-          std::vector<std::string>{"templates/library_types.glsl", "templates/common.glsl",
-                                   "templates/dist_phong.glsl", "templates/phong_edge.glsl",
-                                   "templates/method_arvo_phong.glsl", "templates/polygon.glsl",
-                                   "templates/light_polygon.glsl",
-                                   "templates/library_polygon.glsl"});
+          std::vector<std::string>{"templates/library/types.glsl", "templates/common/common.glsl",
+                                   "templates/dist/phong.glsl", "templates/method/phong_edge.glsl",
+                                   "templates/method/arvo_phong.glsl", "templates/light/polygon.glsl",
+                                   "templates/light/polygon_methods.glsl",
+                                   "templates/library/polygon.glsl"});
     CHECK(variant_templates(parse("dist=phong,method=pearson,light=polygon,fit=paper"),
-                            Language::Glsl)[6] == "templates/method_peak_phong.glsl");
+                            Language::Glsl)[6] == "templates/method/peak_phong.glsl");
 
     // Every family's templates exist, in its row's order, for both languages.
     for (const auto& v : enumerate_variants()) {
         const VariantFamily* family = find_family(v);
         REQUIRE(family);
-        std::vector<std::string> want = {"templates/library_types.glsl", "templates/common.glsl"};
+        std::vector<std::string> want = {"templates/library/types.glsl", "templates/common/common.glsl"};
         // A key value's parts first (table=fit: its closed form), then the row's own.
         for (const auto& part : family->parts)
             if (variant_matches(v, part.key + "=" + part.value))
@@ -135,15 +135,15 @@ TEST_CASE("a variant stitches the library types, common, its family's templates,
         // The light's entry: a polygon's own; a curved light's ellipse, its proxy
         // polygon (used by the polygon methods), then its own reduction.
         if (v.light == LightType::Polygon) {
-            want.push_back("templates/library_polygon.glsl");
+            want.push_back("templates/library/polygon.glsl");
         } else {
-            want.push_back("templates/ellipse_record.glsl");
-            want.push_back("templates/spin_polygon.glsl");
-            want.push_back(std::string("templates/library_") + to_string(v.light) + ".glsl");
+            want.push_back("templates/light/ellipse_record.glsl");
+            want.push_back("templates/light/spin_polygon.glsl");
+            want.push_back(std::string("templates/library/") + to_string(v.light) + ".glsl");
         }
         INFO(canonical_name(v));
         CHECK(variant_templates(v, Language::Cpp) == want);
-        want.push_back("templates/kernel.glsl");
+        want.push_back("templates/library/kernel.glsl");
         CHECK(variant_templates(v, Language::Glsl) == want);
         for (const auto& path : want) {
             INFO(path);

@@ -1,5 +1,5 @@
-// Linearly transformed cosines for curved lights (templates/ltc_ellipse.glsl,
-// templates/ellipse_cone.glsl): the ellipse's form factor in closed form. diffuse
+// Linearly transformed cosines for curved lights (templates/method/ltc_ellipse.glsl,
+// templates/light/ellipse_cone.glsl): the ellipse's form factor in closed form. diffuse
 // against the oracle and against closed forms (sphere irradiance, a disc on its
 // axis); specular against the polygon LTC summed over a 256-triangle fan of the same
 // light (the same tables, so what is left is the 256-gon's missing area) and against
@@ -133,7 +133,7 @@ CaseSet fan_of(const Case& c, int k) {
     return set;
 }
 
-// diffuse is CONTRACT.md 2's Lambert term in closed form (ellipse_cone.glsl), held to
+// diffuse is CONTRACT.md 2's Lambert term in closed form (light/ellipse_cone.glsl), held to
 // kClosedFormDiffuse (eval_support.hpp). Measured: on the random sets below relL2 3.9e-7
 // and largest case 9.5e-6; on the public sets relL2 4.5e-6 at most per (set, dist,
 // light). The mirror against lavapipe: measured 2.5e-5 on the random sets below and

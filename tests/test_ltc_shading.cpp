@@ -1,4 +1,4 @@
-// Linearly transformed cosines (templates/method_ltc.glsl) with arealight's fitted
+// Linearly transformed cosines (templates/method/ltc.glsl) with arealight's fitted
 // tables: every distribution's default and every key against the oracle on seeded
 // random polygons (specular bounded, diffuse exact), both backends and their
 // agreement, the folded Fresnel channel against the same variant without Fresnel,
@@ -164,7 +164,7 @@ TEST_CASE("ltc: Fresnel in the magnitude: within 1.2x of the error without it",
     // per-case ratio ref_F / ref_1 (a perfect Fresnel channel on the same fit).
     // Measured, random f0: relL2 / plain 1.15 (blinn), 1.18 (beckmann), 1.17 (ggx); to
     // the yardstick 1.24, 1.05, 0.97. At f0 0.04, to the yardstick: 2.67, 1.37, 1.38
-    // (blinn's grazing lobes: its channel is the plain split sum, see method_ltc.glsl).
+    // (blinn's grazing lobes: its channel is the plain split sum, see method/ltc.glsl).
     constexpr double kFresnelRatio = 1.2;
     struct FresnelBar {
         Distribution d;

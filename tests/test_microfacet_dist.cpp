@@ -1,5 +1,5 @@
 // The microfacet distribution vocabulary (templates/dist_{blinn,beckmann,ggx}.glsl and
-// templates/microfacet.glsl) compiled as C++ at both working precisions, against
+// templates/dist/microfacet.glsl) compiled as C++ at both working precisions, against
 // references written here from CONTRACT.md 2 in long double: quadrature of D for
 // G, T and y, the contract's Lambda formulas, and Boost's erfc for erfcx.
 #include <algorithm>
@@ -64,29 +64,29 @@
 #define rvec4 dvec4
 #define AL_PRECISION_FP64 1
 #define AL_R(x) x
-#define AL_DIST_BLINN 1  // microfacet.glsl defines the Beckmann Lambda only then
+#define AL_DIST_BLINN 1  // dist/microfacet.glsl defines the Beckmann Lambda only then
 namespace mf64_blinn {
 using namespace glm;
-#include "templates/common.glsl"
-#include "templates/dist_blinn.glsl"
-#include "templates/microfacet.glsl"
+#include "templates/common/common.glsl"
+#include "templates/dist/blinn.glsl"
+#include "templates/dist/microfacet.glsl"
 AL_TEST_WRAPPERS
 }  // namespace mf64_blinn
 #undef AL_DIST_BLINN
-#define AL_DIST_BECKMANN 1  // microfacet.glsl defines the Beckmann Lambda only then
+#define AL_DIST_BECKMANN 1  // dist/microfacet.glsl defines the Beckmann Lambda only then
 namespace mf64_beckmann {
 using namespace glm;
-#include "templates/common.glsl"
-#include "templates/dist_beckmann.glsl"
-#include "templates/microfacet.glsl"
+#include "templates/common/common.glsl"
+#include "templates/dist/beckmann.glsl"
+#include "templates/dist/microfacet.glsl"
 AL_TEST_WRAPPERS
 }  // namespace mf64_beckmann
 #undef AL_DIST_BECKMANN
 namespace mf64_ggx {
 using namespace glm;
-#include "templates/common.glsl"
-#include "templates/dist_ggx.glsl"
-#include "templates/microfacet.glsl"
+#include "templates/common/common.glsl"
+#include "templates/dist/ggx.glsl"
+#include "templates/dist/microfacet.glsl"
 AL_TEST_WRAPPERS
 }  // namespace mf64_ggx
 #undef real
@@ -103,29 +103,29 @@ AL_TEST_WRAPPERS
 #define rvec4 vec4
 #define AL_PRECISION_FP64 0
 #define AL_R(x) x##f
-#define AL_DIST_BLINN 1  // microfacet.glsl defines the Beckmann Lambda only then
+#define AL_DIST_BLINN 1  // dist/microfacet.glsl defines the Beckmann Lambda only then
 namespace mf32_blinn {
 using namespace glm;
-#include "templates/common.glsl"
-#include "templates/dist_blinn.glsl"
-#include "templates/microfacet.glsl"
+#include "templates/common/common.glsl"
+#include "templates/dist/blinn.glsl"
+#include "templates/dist/microfacet.glsl"
 AL_TEST_WRAPPERS
 }  // namespace mf32_blinn
 #undef AL_DIST_BLINN
-#define AL_DIST_BECKMANN 1  // microfacet.glsl defines the Beckmann Lambda only then
+#define AL_DIST_BECKMANN 1  // dist/microfacet.glsl defines the Beckmann Lambda only then
 namespace mf32_beckmann {
 using namespace glm;
-#include "templates/common.glsl"
-#include "templates/dist_beckmann.glsl"
-#include "templates/microfacet.glsl"
+#include "templates/common/common.glsl"
+#include "templates/dist/beckmann.glsl"
+#include "templates/dist/microfacet.glsl"
 AL_TEST_WRAPPERS
 }  // namespace mf32_beckmann
 #undef AL_DIST_BECKMANN
 namespace mf32_ggx {
 using namespace glm;
-#include "templates/common.glsl"
-#include "templates/dist_ggx.glsl"
-#include "templates/microfacet.glsl"
+#include "templates/common/common.glsl"
+#include "templates/dist/ggx.glsl"
+#include "templates/dist/microfacet.glsl"
 AL_TEST_WRAPPERS
 }  // namespace mf32_ggx
 #undef real

@@ -1,4 +1,4 @@
-// Representative-point shading (templates/method_mrp.glsl), every distribution and
+// Representative-point shading (templates/method/mrp.glsl), every distribution and
 // light: diffuse exact (against the oracle, and a sphere's against Snyder's closed
 // form written out here), specular against the oracle with bars that are the method's
 // measured error (it is an approximation: the bars say how far off it is, and fail if
@@ -103,7 +103,7 @@ TEST_CASE("mrp: sphere diffuse is Snyder's closed form, horizon included", "[sha
     // between (x = cot s, y = -x cot t, z = sin t sqrt(1 - y^2))
     //   (cos(t) acos(y) - x z) sin^2(s) / pi + atan(z / x) / pi.
     // Written here from the formula, in double, and checked against the oracle (1e-8);
-    // the shader's is ellipse_cone.glsl's closed form. fp32, score metric (floor 1e-3:
+    // the shader's is light/ellipse_cone.glsl's closed form. fp32, score metric (floor 1e-3:
     // a sphere at the horizon's edge leaves ~1e-9, fp32's cancellation); measured 3.1e-7.
     constexpr double kSnyderTol = 2e-5;
     constexpr double kFormulaTol = 1e-8;

@@ -1,4 +1,4 @@
-// Each peak-function edge integral (templates/method_peak_phong.glsl, through the
+// Each peak-function edge integral (templates/method/peak_phong.glsl, through the
 // CPU mirror's edge probe) against adaptive quadrature of its integrand, over a grid
 // of (c, k, arc), in the form the boundary driver would choose there.
 #include <fmt/format.h>
@@ -40,7 +40,7 @@ double exact_integral(double ta, double tb, double c, double k, bool far_edge) {
     return gauss_kronrod<double, 31>::integrate(f, xa, xb, 10, 1e-12);
 }
 
-// phong_edge.glsl's choice: far where N s^2 > 4 or x^(N+1) < exp(-2.3) along the
+// method/phong_edge.glsl's choice: far where N s^2 > 4 or x^(N+1) < exp(-2.3) along the
 // whole arc (k stands for N + 1 here); fit=paper fits the near form everywhere.
 bool driver_far(double ta, double tb, double c, double k) {
     const double s2 = 1 - c * c;

@@ -1,5 +1,5 @@
 // The paper's half-vector axial moments for microfacet distributions on polygon lights
-// (templates/method_peak_microfacet.glsl): every peak function at its default keys
+// (templates/method/peak_microfacet.glsl): every peak function at its default keys
 // against the oracle on seeded random polygons, both backends and their agreement,
 // finite non-negative values at the parameter and view extremes for every listed
 // variant, and the normalization of each moment mixture it ships (the mixture's D
@@ -44,12 +44,12 @@
 #define AL_DIST_BLINN 1
 namespace pmf_blinn {
 using namespace glm;
-#include "../templates/common.glsl"
-#include "../templates/dist_blinn.glsl"
-#include "../templates/microfacet.glsl"
-#include "../templates/phong_edge.glsl"
-#include "../templates/method_peak_phong.glsl"
-#include "../templates/method_peak_microfacet.glsl"
+#include "../templates/common/common.glsl"
+#include "../templates/dist/blinn.glsl"
+#include "../templates/dist/microfacet.glsl"
+#include "../templates/method/phong_edge.glsl"
+#include "../templates/method/peak_phong.glsl"
+#include "../templates/method/peak_microfacet.glsl"
 AL_PMF_TEST_WRAPPERS
 }  // namespace pmf_blinn
 #undef AL_PEAK_LOG_FAR
@@ -60,12 +60,12 @@ AL_PMF_TEST_WRAPPERS
 #define AL_DIST_BECKMANN 1
 namespace pmf_beckmann {
 using namespace glm;
-#include "../templates/common.glsl"
-#include "../templates/dist_beckmann.glsl"
-#include "../templates/microfacet.glsl"
-#include "../templates/phong_edge.glsl"
-#include "../templates/method_peak_phong.glsl"
-#include "../templates/method_peak_microfacet.glsl"
+#include "../templates/common/common.glsl"
+#include "../templates/dist/beckmann.glsl"
+#include "../templates/dist/microfacet.glsl"
+#include "../templates/method/phong_edge.glsl"
+#include "../templates/method/peak_phong.glsl"
+#include "../templates/method/peak_microfacet.glsl"
 AL_PMF_TEST_WRAPPERS
 }  // namespace pmf_beckmann
 #undef AL_PEAK_LOG_FAR
@@ -76,12 +76,12 @@ AL_PMF_TEST_WRAPPERS
 #define AL_DIST_GGX 1
 namespace pmf_ggx {
 using namespace glm;
-#include "../templates/common.glsl"
-#include "../templates/dist_ggx.glsl"
-#include "../templates/microfacet.glsl"
-#include "../templates/phong_edge.glsl"
-#include "../templates/method_peak_phong.glsl"
-#include "../templates/method_peak_microfacet.glsl"
+#include "../templates/common/common.glsl"
+#include "../templates/dist/ggx.glsl"
+#include "../templates/dist/microfacet.glsl"
+#include "../templates/method/phong_edge.glsl"
+#include "../templates/method/peak_phong.glsl"
+#include "../templates/method/peak_microfacet.glsl"
 AL_PMF_TEST_WRAPPERS
 }  // namespace pmf_ggx
 #undef AL_PEAK_LOG_FAR
@@ -91,12 +91,12 @@ AL_PMF_TEST_WRAPPERS
 #define AL_FIT_PAPER 1
 namespace pmf_ggx_paper {
 using namespace glm;
-#include "../templates/common.glsl"
-#include "../templates/dist_ggx.glsl"
-#include "../templates/microfacet.glsl"
-#include "../templates/phong_edge.glsl"
-#include "../templates/method_peak_phong.glsl"
-#include "../templates/method_peak_microfacet.glsl"
+#include "../templates/common/common.glsl"
+#include "../templates/dist/ggx.glsl"
+#include "../templates/dist/microfacet.glsl"
+#include "../templates/method/phong_edge.glsl"
+#include "../templates/method/peak_phong.glsl"
+#include "../templates/method/peak_microfacet.glsl"
 AL_PMF_TEST_WRAPPERS
 }  // namespace pmf_ggx_paper
 #undef AL_PEAK_LOG_FAR

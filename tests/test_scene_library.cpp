@@ -318,7 +318,7 @@ TEST_CASE("library: each patented peak-function method's function comment names 
     CHECK(count(peak) == 3);
     const std::regex comment_then_function(
         "// Patent: the peak-function method of Lecocq et al\\. is covered by US 10,607,404; see "
-        "README\\.md\\.\nArealightShading arealight_(polygon_phong|disk_ggx|sphere_beckmann)\\(");
+        "arealight's README\\.md, Patent notice\\.\nArealightShading arealight_(polygon_phong|disk_ggx|sphere_beckmann)\\(");
     CHECK(std::distance(std::sregex_iterator(peak.begin(), peak.end(), comment_then_function),
                         std::sregex_iterator()) == 3);
     CHECK(count(library({"dist=ggx,method=ltc,light=polygon", "dist=phong,method=exact,light=disk",

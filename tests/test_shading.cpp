@@ -325,7 +325,7 @@ TEST_CASE("peak-function methods: bounded error on random polygons, backends agr
     }
 }
 
-// The tuned peak methods near the horizon at low N (peak_lobe_edge.glsl: the Gauss
+// The tuned peak methods near the horizon at low N (method/peak_lobe_edge.glsl: the Gauss
 // rule below N = 32 and for every arc's z integral). Bars on the relL2 of specular
 // and moment: about 1.5x the worst of the two backends and quantities on these
 // cases (lorentz specular 3.4e-3, moment 5.6e-3; pearson 1.3e-3, 2.3e-3; ellipsoid

@@ -1,4 +1,4 @@
-// The validation kernel's case record (templates/kernel.glsl, AlKernelCase)
+// The validation kernel's case record (templates/library/kernel.glsl, AlKernelCase)
 // and result record, shared by the packer (runtime/evaluator.cpp), the Vulkan
 // runner and the CPU mirror's loop (generator/mirror_tool.cpp).
 #pragma once

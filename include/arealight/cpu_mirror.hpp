@@ -37,7 +37,7 @@ const MirrorEntry* find_mirror_entry(const std::string& canonical_variant);
 // One peak-function edge integral of a variant's mirror (a test hook): the fit of
 // the near-form integrand (1 - x^k) / (1 - x^2) (far_edge false) or of
 // x^k / (1 - x^2) over the arc from tau_a = atan2(ag, af) to tau_b = atan2(bg, bf),
-// x = c cos(tau), c = sqrt(1 - s^2) (templates/method_peak_phong.glsl).
+// x = c cos(tau), c = sqrt(1 - s^2) (templates/method/peak_phong.glsl).
 using EdgeProbeFn = float (*)(float ag, float af, float bg, float bf, float s, float k,
                               bool far_edge);
 struct EdgeProbeEntry {

@@ -56,7 +56,7 @@ std::optional<std::string> generate_library(const std::vector<Variant>& variants
 // "arealight_polygon_ggx".
 // The light's arguments of the library function as the validation kernel and the
 // CPU mirror spell them over their locals vertices[8], axes[3], count, two_sided
-// (templates/kernel.glsl): "vertices[0], vertices[1].x" for a sphere.
+// (templates/library/kernel.glsl): "vertices[0], vertices[1].x" for a sphere.
 std::string kernel_light_arguments(const Variant& v);
 std::string library_function_name(const Variant& v);
 // The macro that sets a sampler's binding ("AREALIGHT_POLYGON_GGX_LTC_MATRIX_BINDING"),

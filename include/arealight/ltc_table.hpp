@@ -1,6 +1,6 @@
 // Linearly transformed cosines (Heitz et al. 2016; seed 001): the fitted tables,
 // their file format, the fitter (`arealight fit-ltc`) and the textures the
-// shaders sample (templates/method_ltc.glsl).
+// shaders sample (templates/method/ltc.glsl).
 //
 // Conventions shared with the shader (change both together):
 // - Local frame: z = n, x = normalize(v - n (n.v)), y = z cross x; so the view is

@@ -21,7 +21,7 @@ namespace arealight {
 // point: the point-light baseline of every speed ratio.
 enum class Method { Exact, Arvo, Lorentz, Pearson, Ellipsoid, Ltc, Mrp, Point };
 // Peak-function fitting recipe: tuned (default: fit points, shape parameters and
-// near/far forms of our own, templates/method_peak_phong.glsl) or paper (seed 000
+// near/far forms of our own, templates/method/peak_phong.glsl) or paper (seed 000
 // eq. 7, 13-14, 17-18 as printed, parity labels corrected).
 enum class Fit { Tuned, Paper };
 // How a peak method forms the double-axis (specular) moment: twoaxis (Arvo's exact
@@ -35,7 +35,7 @@ enum class Sided { Any, One, Two };
 // offers fp32; method=ltc defaults to fp32 and offers fp16 (seed 001: the edge
 // integrals and the horizon in half precision); every other method is fp32 only.
 enum class Precision { Fp32, Fp64, Fp16 };
-// Microfacet peak methods (templates/method_peak_microfacet.glsl): how each edge of the
+// Microfacet peak methods (templates/method/peak_microfacet.glsl): how each edge of the
 // lit region is split before its points are mapped to half vectors: none, single
 // (seed 000 Algorithm 1: at the foot of r, where it lies inside the edge) or halved
 // (that point, then each piece halved: at most 3 splits).
@@ -55,13 +55,13 @@ enum class Horizon { Clip, Proxy };
 enum class Edge { Acos, Poly };
 // method=ltc (GGX): where the fitted coefficients come from: texture (the two 64 x 64
 // tables, sampled bilinearly) or fit (closed-form polynomials of the same grid
-// coordinates, templates/ltc_ggx_fit.glsl from scripts/fit_ltc_ggx_closed.py, and the
+// coordinates, templates/method/ltc_ggx_fit.glsl from scripts/fit_ltc_ggx_closed.py, and the
 // horizon proxy's closed form: no table, no sampler).
 enum class Table { Texture, Fit };
 // Curved lights through a polygon method (seed 000 section 9, the spinning polygon):
 // how the proxy regular polygon is turned at each shading point. rim: area-matched,
 // one edge crossing the light's rim where the mirror ray meets the light's plane;
-// paper: Algorithm 3 with its typos corrected (templates/spin_polygon.glsl).
+// paper: Algorithm 3 with its typos corrected (templates/light/spin_polygon.glsl).
 enum class Orient { Rim, Paper };
 
 // One shader variant. Each key of the key table (variant_keys()) is a typed field
@@ -158,7 +158,7 @@ const std::vector<KeyInfo>& variant_keys();
 
 // A (dist, method, light) with an implementation: the further keys it uses, each
 // with the values enumerated for it (exactly the values valid for it, in the key's
-// order), and the templates it stitches, in order, between templates/common.glsl
+// order), and the templates it stitches, in order, between templates/common/common.glsl
 // and (GLSL only) templates/entry.glsl, as names inside templates/.
 struct FamilyKey {
     // In the table, {} stands for every value of the key; variant_families() lists them.
@@ -173,7 +173,7 @@ struct FamilyKey {
 };
 // A key value that changes what a family stitches and samples (method=ltc's
 // table=fit: closed-form code in place of the tables): its templates are stitched
-// first (after templates/common.glsl), and without_samplers drops the family's samplers.
+// first (after templates/common/common.glsl), and without_samplers drops the family's samplers.
 struct FamilyKeyParts {
     std::string key;
     std::string value;
@@ -201,7 +201,7 @@ const std::vector<VariantFamily>& variant_families();
 // The family row of the variant's (dist, method, light), or nullptr when none.
 const VariantFamily* find_family(const Variant& v);
 
-// What the variant stitches between templates/common.glsl and the light's entry, and
+// What the variant stitches between templates/common/common.glsl and the light's entry, and
 // the tables it samples: its family's, with the parts of the key values it has
 // (VariantFamily::parts). Empty for a variant without a family.
 std::vector<std::string> variant_family_templates(const Variant& v);

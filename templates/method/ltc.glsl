@@ -1,0 +1,425 @@
+// Linearly transformed cosines (Heitz, Dupuy, Hill, Neubelt 2016, "Real-time
+// polygonal-light shading with linearly transformed cosines") for polygon lights,
+// with arealight's own fitted tables (data/ltc/, `arealight fit-ltc`, conventions
+// in include/arealight/ltc_table.hpp). The BRDF lobe f (n.w) of a view
+// and roughness is approximated by a clamped cosine seen through a 3x3 matrix M:
+// its integral over the light is the cosine's over Minv applied to the light, a
+// polygon again, integrated by the edge formula (Lambert's), times
+// the lobe's magnitude. Domain: every case of CONTRACT.md 2 (n.v <= 0 gives
+// specular 0). Error: the fit's (docs/ltc.md, `arealight report`); diffuse is the exact
+// Lambert term (fp32 rounding only).
+//
+// Curved lights (disk, sphere, ellipsoid) take the same lookup, proxy horizon and
+// magnitude (al_ltc_lookup, al_ltc_proxy_form, al_ltc_magnitude) with the ellipse's
+// own form factor instead of the edge sum (method/ltc_ellipse.glsl); the polygon's parts
+// below are compiled for polygons only.
+//
+// Keys: horizon=clip clips the transformed polygon to z >= 0 exactly; horizon=proxy
+// (Hill 2016, "Real-Time Area Lighting: a Journey from Research to Production")
+// integrates it unclipped and replaces the clipped form factor by that of a sphere
+// with the same vector form factor (a table: the amplitude texture's w).
+// edge=acos takes theta / sin(theta) exactly; edge=poly by a quadratic in cos(theta)
+// (scripts/fit_edge_poly.py). precision=fp16 computes the edge integrals, the
+// clipping and the proxy in half precision (hreal), after the transform in fp32.
+// table=fit (GGX) evaluates the coefficients in closed form (templates/method/ltc_ggx_fit.glsl,
+// al_ltc_fit_lookup) and the proxy by Snyder's formula: no texture, no sampler.
+// GPU cost (navi21, `arealight gpu-cost`, the validation kernel): GGX polygon default
+// 986 (1.98x its point light's 498; 2705 instructions, 96 VGPRs); table=fit 1910
+// (3.84x; 3576 instructions, 96 VGPRs).
+
+// Grid of the tables (include/arealight/ltc_table.hpp, ltc_rho_range in
+// fit/ltc_table.cpp): 64 x 64 cells; rho = sqrt(alpha) spans the contract's
+// parameter range (alpha in [0.001, 1]; phong and blinn through alpha = sqrt(2 / (N + 2))
+// for N in [1, 1e5]).
+const real AL_LTC_SIZE = AL_R(64.0);
+#if defined(AL_DIST_PHONG) || defined(AL_DIST_BLINN)
+const real AL_LTC_RHO_MIN = AL_R(0.0668727776);  // (2 / 100002)^(1/4)
+const real AL_LTC_RHO_MAX = AL_R(0.9036020036);  // (2 / 3)^(1/4)
+#else
+const real AL_LTC_RHO_MIN = AL_R(0.0316227766);  // sqrt(0.001)
+const real AL_LTC_RHO_MAX = AL_R(1.0);
+#endif
+
+#ifdef AL_LANG_CPP
+// Compute shaders have no derivatives: GLSL samples with an explicit LOD; the
+// mirror's sampler has one level.
+vec4 textureLod(const AlSampler2D& s, vec2 uv, float) { return texture(s, uv); }
+#endif
+
+// Texture coordinates of (rho, cos theta_v): texel centres are the fitted cells.
+vec2 al_ltc_uv(real param, real nv, real sin_v) {
+#if defined(AL_DIST_PHONG) || defined(AL_DIST_BLINN)
+    real alpha = sqrt(AL_R(2.0) / (param + AL_R(2.0)));
+#else
+    real alpha = param;
+#endif
+    real rho = sqrt(alpha);
+    real u = clamp((rho - AL_LTC_RHO_MIN) / (AL_LTC_RHO_MAX - AL_LTC_RHO_MIN), AL_R(0.0),
+                   AL_R(1.0));
+    // sqrt(1 - cos) from the sine where the view is within 90 degrees of n: near n,
+    // 1 - n.v keeps only fp32's rounding of n.v (a view 3.4e-4 rad off n per ulp), the
+    // sine keeps its own digits.
+    real w = nv > AL_R(0.0) ? min(sin_v * inversesqrt(AL_R(1.0) + nv), AL_R(1.0))
+                            : sqrt(clamp(AL_R(1.0) - nv, AL_R(0.0), AL_R(1.0)));
+    return vec2((rvec2(u, w) * (AL_LTC_SIZE - AL_R(1.0)) + AL_R(0.5)) / AL_LTC_SIZE);
+}
+
+// The angle atan2(s, x) in [0, pi] for s >= 0, by one quotient t = min / max in
+// [0, 1] and Abramowitz & Stegun 4.4.49's odd polynomial for atan t (|error| <= 2e-8,
+// below fp32's half ulp of the result; relative 1.8e-8, also for small t). Cheaper than
+// common/common.glsl's al_atan2 (no reduction quotient), which the LTC's edges (9 per
+// polygon, twice) would spend most of their time in.
+real al_ltc_angle(real s, real x) {
+    real ax = abs(x);
+    real t = min(s, ax) / max(max(s, ax), AL_R(1e-30));
+    real z = t * t;
+    real p = AL_R(0.0028662257);
+    p = p * z - AL_R(0.0161657367);
+    p = p * z + AL_R(0.0429096138);
+    p = p * z - AL_R(0.0752896400);
+    p = p * z + AL_R(0.1065626393);
+    p = p * z - AL_R(0.1420889944);
+    p = p * z + AL_R(0.1999355085);
+    p = p * z - AL_R(0.3333314528);
+    p = (p * z + AL_R(1.0)) * t;
+    real r = s <= ax ? p : AL_HALF_PI - p;
+    return x < AL_R(0.0) ? AL_PI - r : r;
+}
+
+// theta / sin(theta) of the arc between a and b, from x = a.b and m = a x b, in
+// the LTC's arithmetic (hreal) and by the edge key; a and b unit for poly (x is the
+// cosine), any lengths for acos (theta / |m| then absorbs them). poly: the quadratic p(x) =
+// c2 x^2 + c1 x + c0 with p(1) = 1, largest relative error 5.2e-3 on [0, 1] (the mobile LTC article
+// prints 0.33735186 x^2 - 0.89665001 x + pi/2: 1.15e-2, and 1.15% too large on every
+// small edge); for x < 0, theta / sin = pi / sin - p(|x|) with sin = |m| (the article forms
+// sqrt(1 - x^2), which cancels in fp16 as the edge nears a half circle), floored at
+// fp16's smallest normal.
+hreal al_edge_factor(hreal x, hvec3 m) {
+#ifdef AL_EDGE_POLY
+    hreal y = abs(x);
+    hreal p = (hreal(0.28515792) * y + hreal(-0.84773167)) * y + hreal(1.56257375);
+    return x >= hreal(0.0) ? p : hreal(3.14159265) / max(length(m), hreal(6.2e-5)) - p;
+#else
+    hreal s = length(m);
+    return s > hreal(0.0) ? hreal(al_ltc_angle(float(s), float(x))) / s : hreal(1.0);
+#endif
+}
+
+// Unit vectors where the LTC's edge integral needs them: poly (x = cos theta) and
+// fp16 (its range); the exact acos form is scale-free.
+#if defined(AL_EDGE_POLY) || defined(AL_PRECISION_FP16)
+#define AL_LTC_UNIT(x) normalize(x)
+#else
+#define AL_LTC_UNIT(x) (x)
+#endif
+
+// The edge's share of the vector form factor times 2 pi (its z is the form factor's).
+hvec3 al_edge_ltc(hvec3 a, hvec3 b) {
+    hvec3 m = cross(a, b);
+    return m * al_edge_factor(dot(a, b), m);
+}
+
+#ifdef AL_DIST_GGX
+// Schlick's (1 - h.v)^5 for the direction w (any length, in the local frame) and the
+// view (sv, 0, nv): h.v = sqrt((1 + w.v / |w|) / 2). -1 when w is 0 (no direction).
+real al_ltc_schlick_weight(rvec3 w, real sv, real nv) {
+    real len = length(w);
+    if (!(len > AL_R(0.0))) return -AL_R(1.0);
+    real hv = sqrt(max(AL_R(0.5) + AL_R(0.5) * (w.x * sv + w.z * nv) / len, AL_R(0.0)));
+    real t = AL_R(1.0) - hv, t2 = t * t;
+    return t2 * t2 * t;
+}
+#endif
+
+// One edge a -> b of a polygon clipped to z >= 0, streamed (the clipped polygon is
+// never stored; light/polygon.glsl does the same for the exact methods): adds the edge's
+// clipped part to `sum` and records where the boundary leaves (exit) and re-enters
+// (entry) the upper half space; the closing arc exit -> entry along the horizon is
+// added after the loop. The crossing is taken on the chord (planes through the
+// origin keep their sides under projection); it is made unit only where the edge
+// integral needs unit vectors (al_edge_factor), as a and b then are.
+void al_ltc_clip_edge(hvec3 a, hvec3 b, AL_INOUT(hvec3) sum, AL_INOUT(hvec3) exit_pt,
+                      AL_INOUT(hvec3) entry_pt, AL_INOUT(bool) has_exit) {
+    bool ia = a.z >= hreal(0.0), ib = b.z >= hreal(0.0);
+    if (!ia && !ib) return;
+    hvec3 q = a;
+    if (ia != ib) q = AL_LTC_UNIT((a.z * b - b.z * a) / (a.z - b.z));
+    sum += al_edge_ltc(ia ? a : q, ib ? b : q);
+    if (ia && !ib) {
+        exit_pt = q;
+        has_exit = true;
+    }
+    if (!ia && ib) entry_pt = q;
+}
+
+#ifndef AL_LIGHT_CURVED
+// The same for the Lambert term in the working precision, exact, about n in the
+// case's frame (za = n.a, zb = n.b).
+// The edge's unit normal m comes from the vertex offsets (light/polygon.glsl's rule: a x (b - a)
+// with b - a formed from the offsets, which the sums a, b would round away when p is
+// near the light's plane); the clipped arc keeps it.
+void al_lambert_clip_edge(rvec3 a, rvec3 b, real za, real zb, rvec3 m, rvec3 n,
+                          AL_INOUT(real) sum, AL_INOUT(rvec3) exit_pt, AL_INOUT(rvec3) entry_pt,
+                          AL_INOUT(bool) has_exit) {
+    bool ia = za >= AL_R(0.0), ib = zb >= AL_R(0.0);
+    if (!ia && !ib) return;
+    rvec3 q = a;
+    if (ia != ib) q = al_crossing(a, b, za, zb);
+    rvec3 a0 = ia ? a : q, b0 = ib ? b : q;
+    // The arc's sine along m (light/polygon.glsl's al_arc), not |a0 x b0|: m carries the
+    // offsets' precision.
+    real sn = dot(b0, cross(m, a0));
+    real arc = al_ltc_angle(abs(sn), dot(a0, b0));
+    sum += (sn < AL_R(0.0) ? -arc : arc) * dot(m, n);
+    if (ia && !ib) {
+        exit_pt = q;
+        has_exit = true;
+    }
+    if (!ia && ib) entry_pt = q;
+}
+#endif
+
+#ifdef AL_TABLE_FIT
+// table=fit (GGX): the two textures' (a, b, c, d) and (A, B) in closed form, from the
+// lobe quantities of templates/method/ltc_ggx_fit.glsl (scripts/fit_ltc_ggx_closed.py: why
+// these, not the coefficients): axis angle phi = theta_v + alpha q, inverse widths
+// sx = e^lsx / alpha, sy = e^lsy / (alpha cos theta_v), then a = N cos phi,
+// b = N sin phi, c = sy k, N = sx k with k = cos phi - d sin phi. Domain: alpha in
+// [0.001, 1], any view (w is clamped to the fitted rows, cos theta_v >= 0.0315; a
+// view below the horizon gets finite values, its specular is 0). Error: the fit's
+// (that file's header) in place of bilinear filtering's.
+void al_ltc_fit_lookup(real param, real nv, real sin_v, AL_INOUT(rvec4) m,
+                       AL_INOUT(rvec4) amp) {
+    real u = clamp((sqrt(param) - AL_LTC_RHO_MIN) / (AL_LTC_RHO_MAX - AL_LTC_RHO_MIN),
+                   AL_R(0.0), AL_R(1.0));
+    real rho = AL_LTC_RHO_MIN + u * (AL_LTC_RHO_MAX - AL_LTC_RHO_MIN);
+    real alpha = rho * rho;
+    // w from the sine, as al_ltc_uv takes it; clamped to the last fitted row, 62/63.
+    real w = nv > AL_R(0.0) ? sin_v * inversesqrt(AL_R(1.0) + nv)
+                            : sqrt(clamp(AL_R(1.0) - nv, AL_R(0.0), AL_R(1.0)));
+    w = min(w, AL_R(0.98412698412698413));
+    real x = AL_R(2.0) * u - AL_R(1.0);
+    real y = w * AL_R(2.0317460317460317) - AL_R(1.0);  // 2 w / (62 / 63) - 1
+    real w2 = w * w, w4 = w2 * w2;
+    real cos_v = AL_R(1.0) - w2;
+    // The view's own angle (not the clamped row's): the lobe follows the view past 62/63.
+    real phi = clamp(al_ltc_angle(sin_v, nv) + alpha * al_ltc_fit_q(x, y), AL_R(0.0),
+                     AL_HALF_PI);
+    real cp = cos(phi), sp = sin(phi);
+    real d = al_ltc_fit_d(x, y);
+    // k = (a - b d) / N > 0 in every cell; the floor only keeps a fit's excursion finite.
+    real k = max(cp - d * sp, AL_R(1e-3));
+    real n = exp(al_ltc_fit_lsx(x, y)) / alpha * k;
+    real cc = exp(al_ltc_fit_lsy(x, y)) / (alpha * cos_v) * k;
+    m = rvec4(n * cp, n * sp, cc, d);
+    real b = al_ltc_fit_b(x, y) + w4 * w4 * w2;  // + Schlick's weight at the mirror, w^10
+    amp = rvec4(al_ltc_fit_t(x, y) - b, b, AL_R(0.0), AL_R(0.0));
+}
+
+// Snyder's closed form of Hill 2016's horizon proxy (fit/ltc_sphere.cpp, whose values
+// the amplitude texture's w holds divided by sin^2 sigma): the horizon-clipped form
+// factor of a sphere of angular radius sigma at angle omega from n. Domain: co =
+// cos omega in [-1, 1], ss2 = sin^2 sigma in [0, 1]. Error: fp32 rounding (exact form).
+real al_ltc_sphere_clipped(real co, real ss2) {
+    if (!(ss2 > AL_R(0.0))) return AL_R(0.0);
+    real ss = sqrt(ss2);
+    if (co >= ss) return co * ss2;    // entirely above the horizon
+    if (co <= -ss) return AL_R(0.0);  // entirely below
+    real so = sqrt(max((AL_R(1.0) - co) * (AL_R(1.0) + co), AL_R(0.0)));
+    real cs = sqrt(max(AL_R(1.0) - ss2, AL_R(0.0)));
+    // sin gamma = cs / so, cos gamma = sqrt(sin^2 sigma - cos^2 omega) / so: the
+    // difference as a product, and the angles by atan2 (al_ltc_angle), because asin and
+    // 1 - sg^2 lose fp32's digits as gamma nears pi / 2 (a sphere barely straddling).
+    real cg_so = sqrt(max((ss - co) * (ss + co), AL_R(0.0)));
+    real inv_so = so > AL_R(0.0) ? AL_R(1.0) / so : AL_R(0.0);
+    real sg = so > AL_R(0.0) ? min(cs * inv_so, AL_R(1.0)) : AL_R(1.0);
+    real cg = cg_so * inv_so;
+    real gamma = al_ltc_angle(cs, cg_so);
+    real g = -AL_R(2.0) * so * cs * cg + AL_HALF_PI - gamma + sg * cg;
+    real sr = sqrt(max(ss2 - cg * cg, AL_R(0.0)));  // sqrt(sin^2 sigma - cos^2 gamma)
+    real h = co * (cg * sr + ss2 * al_ltc_angle(cg, sr));
+    real i = co > AL_R(0.0) ? (AL_PI * co * ss2 + g - h) / AL_PI : (g + h) / AL_PI;
+    return clamp(i, AL_R(0.0), AL_R(1.0));
+}
+#endif
+
+// The case's LTC: n, its frame (z = n, x toward v; ltc_table.hpp), the texels of its
+// roughness and view, and Minv times the frame as rows: t = Minv (d.tx, d.ty, d.n).
+struct AlLtc {
+    rvec3 n;
+    real nv;
+    rvec4 m;
+    rvec4 amp;
+    rvec3 row0;
+    rvec3 row1;
+    rvec3 row2;
+};
+
+AlLtc al_ltc_lookup(AlCase c) {
+    AlLtc L;
+    L.n = normalize(rvec3(c.n));
+    rvec3 v = normalize(rvec3(c.v));
+    L.nv = dot(L.n, v);
+    // The azimuth from n x v, whose rounding is absolute (~1 ulp) at every angle, and
+    // x = y x n, orthogonal to n to rounding even where v is n to the last bit:
+    // v - n (n.v) there is rounding along n, and a frame built from it had x = +-n.
+    // Below sin(theta_v) = 1e-4 the fitted lobe is isotropic to that order, so any
+    // azimuth serves; above it the azimuth's error is at most ulp / 1e-4 rad.
+    rvec3 ty = cross(L.n, v);
+    real ty_len = length(ty);
+    rvec3 tx;
+    if (ty_len > AL_R(1e-4)) {
+        ty /= ty_len;
+        tx = cross(ty, L.n);
+    } else {
+        al_tangent_frame(L.n, tx, ty);
+    }
+#ifdef AL_TABLE_FIT
+    al_ltc_fit_lookup(real(c.params.x), L.nv, ty_len, L.m, L.amp);
+#else
+    vec2 uv = al_ltc_uv(real(c.params.x), L.nv, ty_len);
+    L.m = rvec4(textureLod(al_ltc_matrix, uv, 0.0f));
+    L.amp = rvec4(textureLod(al_ltc_amplitude, uv, 0.0f));
+#endif
+    L.row0 = L.m.x * tx + L.m.y * L.n;
+    L.row1 = L.m.z * ty;
+    L.row2 = L.m.w * tx + L.n;
+    return L;
+}
+
+// Hill 2016's horizon: the clipped form factor of a sphere with the light's vector form
+// factor F (vector_ff = 2 pi F, any light): sin^2(sigma) = |F|, cos(omega) = F.z / |F|;
+// |F| S(cos omega, |F|) with S from the table (S = 1 where the sphere is above the
+// horizon). Error: the proxy's (exact for a sphere; docs/ltc.md), plus bilinear filtering.
+real al_ltc_proxy_form(hvec3 vector_ff) {
+    real len = real(length(vector_ff)) / AL_TWO_PI;
+    real form = AL_R(0.0);
+    if (len > AL_R(0.0)) {
+        real cz = clamp(real(vector_ff.z) / (len * AL_TWO_PI), AL_R(-1.0), AL_R(1.0));
+#ifdef AL_TABLE_FIT
+        // table=fit: the closed form the table holds, |F| S = I (sin^2 sigma = |F|).
+        form = al_ltc_sphere_clipped(cz, min(len, AL_R(1.0)));
+#else
+        rvec2 suv = (rvec2(cz * AL_R(0.5) + AL_R(0.5), min(len, AL_R(1.0))) *
+                         (AL_LTC_SIZE - AL_R(1.0)) + AL_R(0.5)) / AL_LTC_SIZE;
+        form = len * real(textureLod(al_ltc_amplitude, vec2(suv), 0.0f).w);
+#endif
+    }
+    return form;
+}
+
+// The lobe's magnitude for a light whose LTC-space vector form factor is vector_ff (any
+// scale; only its direction enters, GGX only), Schlick f0 (1: F = 1).
+real al_ltc_magnitude(AlLtc L, hvec3 vector_ff, real f0) {
+#ifdef AL_DIST_PHONG
+    return L.amp.x;
+#else
+    // Fresnel (the mobile LTC article, last section): the table's split f0 A + B is the lobe's
+    // whole-hemisphere average of F. A light holding part of the lobe sees F near
+    // its own part's half vectors, so the (1 - h.v)^5 weight moves by its value at
+    // the light's direction in the lobe (the LTC's vector form factor taken back
+    // through M) less its value for a light filling the hemisphere, so that such a
+    // light stays exact. M = Minv^-1 up to scale: xz block
+    // [[1, -b], [-d, a]], y (a - b d) / c.
+    // Measured on seeded random sets (tests/test_ltc_shading.cpp): the correction
+    // helps GGX (relL2 with random f0 1.81x -> 0.97x that of a perfect Fresnel
+    // channel on the same fit) and hurts the Gaussian-tailed lobes, whose LTC
+    // direction is a poorer guide (beckmann 1.05x -> 1.52x, blinn 1.24x -> 1.52x):
+    // GGX only.
+    rvec4 amp = L.amp;
+    real magnitude = f0 * amp.x + amp.y;
+#ifdef AL_DIST_GGX
+    if (f0 < AL_R(1.0)) {
+        rvec4 m = L.m;
+        real nv = L.nv;
+        rvec3 g = rvec3(vector_ff);
+        rvec3 w = rvec3(g.x - m.y * g.z, g.y * (m.x - m.y * m.w) / m.z, m.x * g.z - m.w * g.x);
+        // The hemisphere's image in the LTC's space is the lune z > 0, (-d, 0, a).w > 0
+        // (M's third row): its vector form factor lies along the sum of the two unit
+        // normals, taken back through M the same way.
+        rvec3 h = rvec3(AL_R(0.0), AL_R(0.0), AL_R(1.0)) +
+                  normalize(rvec3(-m.w, AL_R(0.0), m.x));
+        rvec3 wh = rvec3(h.x - m.y * h.z, AL_R(0.0), m.x * h.z - m.w * h.x);
+        real sv = sqrt(max(AL_R(1.0) - nv * nv, AL_R(0.0)));
+        real x_light = al_ltc_schlick_weight(w, sv, nv);
+        real x_lobe = al_ltc_schlick_weight(wh, sv, nv);
+        if (x_light >= AL_R(0.0) && x_lobe >= AL_R(0.0))
+            magnitude += (AL_R(1.0) - f0) * (amp.x + amp.y) * (x_light - x_lobe);
+    }
+#endif
+    return magnitude;
+#endif
+}
+
+#ifndef AL_LIGHT_CURVED
+// Diffuse and specular (CONTRACT.md 2; no ndf or moment).
+vec4 al_shade(AlCase c) {
+    real side = al_polygon_side(c);
+    if (side == AL_R(0.0)) return vec4(AL_R(0.0));
+    AlLtc L = al_ltc_lookup(c);
+    rvec3 n = L.n;
+    int count = int(c.params.z);
+    rvec3 center = rvec3(c.center);
+    real lambert = AL_R(0.0);
+    rvec3 lx = rvec3(AL_R(0.0)), le = rvec3(AL_R(0.0));
+    bool has_lx = false;
+    // The LTC's vector form factor times 2 pi: of the clipped polygon (clip) or of the
+    // whole one (proxy).
+    hvec3 vector_ff = hvec3(0.0);
+#ifndef AL_HORIZON_PROXY
+    hvec3 hx = hvec3(0.0), he = hvec3(0.0);
+    bool has_hx = false;
+#endif
+    rvec3 pa, pb, da, db;
+    real za, zb;
+    hvec3 ha, hb;
+    // Vertices as given (Lambert, about n) and through Minv (LTC), walked as
+    // light/polygon.glsl walks them (backwards from the front) so that both sums are >= 0;
+    // the last step closes the polygon at vertex 0.
+    AL_UNROLL for (int k = 0; k <= AL_MAX_VERTS; ++k) {
+        if (k > count) break;
+        int idx = k == 0 || k == count ? 0 : (side > AL_R(0.0) ? count - k : k);
+        db = rvec3(c.verts[idx]);
+        pb = normalize(center + db);
+        zb = dot(pb, n);
+        hb = hvec3(AL_LTC_UNIT(rvec3(dot(pb, L.row0), dot(pb, L.row1), dot(pb, L.row2))));
+        if (k > 0) {
+            rvec3 me = normalize(cross(center + da, db - da));
+            al_lambert_clip_edge(pa, pb, za, zb, me, n, lambert, lx, le, has_lx);
+#ifdef AL_HORIZON_PROXY
+            vector_ff += al_edge_ltc(ha, hb);
+#else
+            al_ltc_clip_edge(ha, hb, vector_ff, hx, he, has_hx);
+#endif
+        }
+        pa = pb;
+        da = db;
+        za = zb;
+        ha = hb;
+    }
+    // The closing arc along the horizon, exit -> entry, about n: in [0, pi] (the light
+    // lies in the open half space of its plane, which holds half the horizon circle).
+    // Its sine is taken along n and floored at 0, so that an arc of nearly pi (p near
+    // the light's plane, the foot inside) cannot flip sign through rounding.
+    if (has_lx) lambert += al_ltc_angle(max(dot(le, cross(n, lx)), AL_R(0.0)), dot(lx, le));
+    real diffuse = max(lambert, AL_R(0.0)) / AL_TWO_PI;
+
+    real specular = AL_R(0.0);
+    if (L.nv > AL_R(0.0)) {
+        real form;
+#ifdef AL_HORIZON_PROXY
+        form = al_ltc_proxy_form(vector_ff);
+#else
+        // The closing arc on the horizon z = 0, as for the Lambert term: along +z, its
+        // sine floored at 0.
+        if (has_hx) {
+            hreal sz = max(cross(hx, he).z, hreal(0.0));
+            vector_ff.z += sz * al_edge_factor(dot(hx, he), hvec3(hreal(0.0), hreal(0.0), sz));
+        }
+        form = real(vector_ff.z) / AL_TWO_PI;
+#endif
+        specular = max(form, AL_R(0.0)) * al_ltc_magnitude(L, vector_ff, real(c.params.w));
+    }
+    return vec4(diffuse, specular, AL_R(0.0), AL_R(0.0));
+}
+#endif

@@ -1,0 +1,63 @@
+// The per-arc geometry every boundary-integral Phong method shares (exact and peak
+// functions): the great circle of an arc about the lobe axis r, and the choice
+// between the near and far forms of its edge integral. Notation of
+// method/exact_phong.glsl: m the arc's inward unit normal, s = |r.m|,
+// c = sqrt(1 - s^2), tau the arc angle from the foot of r, x = r.u = c cos(tau).
+
+// One arc's share of the boundary sums. The azimuth swept about r is not here:
+// the driver forms it from per-vertex azimuths, so that its signed total is
+// exactly 2 pi times the winding number and rounding cancels between the arcs
+// that share a vertex.
+struct AlLobeEdge {
+    rvec3 sums;  // far: (r.m) T_(N+1), (r.m) T_N; near: -(r.m) int G_(N+1), -(r.m) int G_N;
+                 // z: (n.m) int x^N dtau. Then T_k = [near] sweep + sums.
+    bool near_edge;
+};
+
+// An azimuth difference wrapped into [-pi, pi], counting the wraps: their signed
+// total is the winding number of the closed boundary about the axis.
+real al_wrap_sweep(real sweep, AL_INOUT(real) wraps) {
+    if (sweep > AL_PI) {
+        wraps += AL_R(1.0);
+        return sweep - AL_TWO_PI;
+    }
+    if (sweep < -AL_PI) {
+        wraps -= AL_R(1.0);
+        return sweep + AL_TWO_PI;
+    }
+    return sweep;
+}
+
+struct AlEdgeFrame {
+    real rm, s, c;   // r.m, |r.m|, sqrt(1 - s^2)
+    real ag, af;     // a.g, a.f: tau_a = atan(ag, af)
+    real bg, bf;     // the same for b
+    real xa, xb;     // x = r.u at a and b
+    bool far_edge;
+};
+
+// D lies in r's hemisphere, so x = r.u >= 0 on the arc and tau stays in [-pi/2, pi/2].
+// Near form only where the arc meets the lobe: its great circle passes within
+// ~2/sqrt(N) of r and x^(N+1) on the arc reaches exp(log_far) (x's maximum is c at the foot
+// if the arc holds it, else at an end). Elsewhere the near form's swept azimuth
+// would cancel against its smooth part to a tiny T, losing its digits.
+AlEdgeFrame al_edge_frame(rvec3 a, rvec3 b, rvec3 m, rvec3 r, real N, real log_far) {
+    AlEdgeFrame E;
+    E.rm = dot(r, m);
+    E.s = abs(E.rm);
+    rvec3 foot = r - E.rm * m;
+    E.c = length(foot);
+    // Edge on r's great circle of horizon: x = 0 everywhere, any foot works.
+    rvec3 f = E.c > AL_R(1e-6) ? foot / E.c : a;
+    rvec3 g = cross(m, f);  // tau = atan(u.g, u.f), increasing from a to b
+    E.ag = dot(a, g);
+    E.af = dot(a, f);
+    E.bg = dot(b, g);
+    E.bf = dot(b, f);
+    E.xa = dot(r, a);
+    E.xb = dot(r, b);
+    real x_max = E.ag <= AL_R(0.0) && E.bg >= AL_R(0.0) ? E.c : max(E.xa, E.xb);
+    E.far_edge = N * E.s * E.s > AL_R(4.0) ||
+                 (N + AL_R(1.0)) * al_log(max(x_max, AL_R(1e-30))) < log_far;
+    return E;
+}
