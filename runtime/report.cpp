@@ -693,6 +693,7 @@ std::vector<std::pair<std::string, std::string>> report_pictures(const Report& r
                 PlotSeries s;
                 s.name = l;
                 s.color = color(l);
+                s.marker = plot_marker(std::find(labels.begin(), labels.end(), l) - labels.begin());
                 for (const ReportRow* row : rows)
                     if (method_label(row->variant, with_dist) == l)
                         s.points.push_back({cost(*row), row->error(), row->name});
@@ -748,6 +749,7 @@ std::vector<std::pair<std::string, std::string>> report_pictures(const Report& r
             for (const auto& row : r.rows)
                 if (row.name == names[k]) s.name = series_label(row.variant, with_dist);
             s.color = plot_color(k);
+            s.marker = plot_marker(k);
             s.line = true;
             for (const auto& row : r.rows)
                 if (row.name == names[k])

@@ -1,6 +1,7 @@
 // The report's plot writer: log axes over whole decades, markers and lines where
 // the values allow, deterministic text.
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -58,4 +59,47 @@ TEST_CASE("svg plot: an empty plot is still a valid picture", "[plot]") {
     const std::string svg = svg_plot(p);
     CHECK(svg.find("</svg>") != std::string::npos);
     CHECK(count(svg, "<circle") == 0);
+}
+
+TEST_CASE("svg plot: every series its own colour and shape, every legend entry on the canvas",
+          "[plot]") {
+    Plot p;
+    p.title = "many";
+    for (int k = 0; k < 26; ++k) {
+        PlotSeries s;
+        s.name = "dist=ggx,method=exact,nodes=2,radial=2,precision=fp32 #" + std::to_string(k);
+        s.color = plot_color(k);
+        s.marker = plot_marker(k);
+        s.points = {{1.0 + k, 1e-3 * (k + 1), ""}};
+        p.series.push_back(s);
+    }
+    p.front = {{1, 1e-3, ""}};
+    p.front_name = "Pareto front";
+    // Series 0 and 10 share a palette colour: their shapes differ.
+    CHECK(plot_color(0) == plot_color(10));
+    CHECK(plot_marker(0) != plot_marker(10));
+    const std::string svg = svg_plot(p);
+    // The canvas: width and height of the <svg> element.
+    const auto w_at = svg.find("width=\"") + 7, h_at = svg.find("height=\"") + 8;
+    const double width = std::stod(svg.substr(w_at)), height = std::stod(svg.substr(h_at));
+    // Each legend text starts inside, its estimated length (7 px a character) fits, and
+    // the last of the 27 entries (the front's) is above the bottom edge.
+    std::size_t seen = 0;
+    double last_y = 0;
+    for (auto at = svg.find("<text x=\""); at != std::string::npos;
+         at = svg.find("<text x=\"", at + 1)) {
+        const double x = std::stod(svg.substr(at + 9));
+        const auto y_at = svg.find("y=\"", at) + 3;
+        const double y = std::stod(svg.substr(y_at));
+        const auto close = svg.find('>', at) + 1;
+        const std::string label = svg.substr(close, svg.find('<', close) - close);
+        if (label.find("dist=ggx") == std::string::npos && label != "Pareto front") continue;
+        ++seen;
+        INFO(label << " at " << x << ", " << y << " on " << width << " x " << height);
+        CHECK(x + 7.0 * label.size() <= width);
+        CHECK(y <= height);
+        last_y = std::max(last_y, y);
+    }
+    CHECK(seen == 27);
+    CHECK(last_y > 480);  // the legend did grow past the default plot height
 }

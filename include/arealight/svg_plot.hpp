@@ -18,6 +18,9 @@ struct PlotSeries {
     std::string color;  // any SVG colour
     bool line = false;  // join the points in order instead of drawing markers
     std::vector<PlotPoint> points;
+    // Marker shape (plot_marker); -1: by the series' place, so that series whose
+    // palette colours repeat (plot_color cycles every 10) still differ in shape.
+    int marker = -1;
 };
 
 struct Plot {
@@ -32,7 +35,10 @@ struct Plot {
 // decades around the rest.
 std::string svg_plot(const Plot& p);
 
-// A fixed palette, one colour per index (cycles).
+// A fixed palette, one colour per index (cycles every 10).
 std::string plot_color(std::size_t index);
+// The marker shape that goes with plot_color(index): circle for the first 10 indices,
+// then square, triangle, diamond and cross, so that (colour, shape) differs for 50.
+int plot_marker(std::size_t index);
 
 }  // namespace arealight
