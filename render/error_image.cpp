@@ -120,6 +120,41 @@ std::array<std::uint8_t, 3> false_colour(double t) {
     return c;
 }
 
+namespace {
+
+// The colour bar's span: room at both ends for half a label.
+constexpr int kBarMargin = 2 * kGlyphAdvance;
+
+int decade_x(int k, int width, const ErrorScale& scale) {
+    const int x0 = kBarMargin, x1 = width - kBarMargin;
+    return x0 + static_cast<int>(std::lround(bar_position(std::pow(10.0, k), scale) * (x1 - x0)));
+}
+
+}  // namespace
+
+std::vector<LegendLabel> error_legend_labels(int width, const ErrorScale& scale) {
+    const int klo = static_cast<int>(std::lround(std::log10(scale.lo)));
+    const int khi = static_cast<int>(std::lround(std::log10(scale.hi)));
+    // The smallest stride in decades at which the widest label clears its neighbour by
+    // a glyph's advance; the top decade is always labelled, counting down from it.
+    int widest = 0;
+    for (int k = klo; k <= khi; ++k)
+        widest = std::max(widest, static_cast<int>(decade_label(k).size()) * kGlyphAdvance);
+    int stride = 1;
+    while (klo + stride <= khi &&
+           decade_x(klo + stride, width, scale) - decade_x(klo, width, scale) <
+               widest + kGlyphAdvance)
+        ++stride;
+    std::vector<LegendLabel> out;
+    for (int k = khi; k >= klo; k -= stride) {
+        const int w = static_cast<int>(decade_label(k).size()) * kGlyphAdvance - kFontScale;
+        const int x = decade_x(k, width, scale);
+        out.push_back({k, x - w / 2, x - w / 2 + w - 1});
+    }
+    std::reverse(out.begin(), out.end());
+    return out;
+}
+
 Image8 error_image(const LinearImage& image, const LinearImage& ref, const ErrorScale& scale) {
     Image8 out;
     out.width = image.width;
@@ -131,7 +166,7 @@ Image8 error_image(const LinearImage& image, const LinearImage& ref, const Error
             put(out, x, y, false_colour(bar_position(pixel_error(image, ref, px, scale.floor), scale)));
         }
     // The colour bar, with room at both ends for half a label.
-    const int margin = 2 * kGlyphAdvance, x0 = margin, x1 = out.width - margin;
+    const int x0 = kBarMargin, x1 = out.width - kBarMargin;
     const int bar_top = image.height + 3, bar_bottom = bar_top + 8;
     for (int x = x0; x <= x1; ++x) {
         const auto c = false_colour(static_cast<double>(x - x0) / std::max(1, x1 - x0));
@@ -140,13 +175,11 @@ Image8 error_image(const LinearImage& image, const LinearImage& ref, const Error
     const int klo = static_cast<int>(std::lround(std::log10(scale.lo)));
     const int khi = static_cast<int>(std::lround(std::log10(scale.hi)));
     for (int k = klo; k <= khi; ++k) {
-        const int x = x0 + static_cast<int>(std::lround(
-                               bar_position(std::pow(10.0, k), scale) * (x1 - x0)));
+        const int x = decade_x(k, out.width, scale);
         for (int y = bar_bottom; y < bar_bottom + 3; ++y) put(out, x, y, {255, 255, 255});
-        const std::string label = decade_label(k);
-        const int width = static_cast<int>(label.size()) * kGlyphAdvance - kFontScale;
-        draw_text(out, x - width / 2, bar_bottom + 5, label);
     }
+    for (const LegendLabel& l : error_legend_labels(out.width, scale))
+        draw_text(out, l.left, bar_bottom + 5, decade_label(l.decade));
     return out;
 }
 

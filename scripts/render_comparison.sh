@@ -28,8 +28,27 @@ render() {
   "$A" render --scene "$SCENE" --size $SIZE --out "$DOCS/$name.png" "$@" | tee "$WORK/$name.log"
 }
 
-if [ "${REUSE_REFERENCE:-0}" != 1 ] || [ ! -f "$WORK/reference.pfm" ]; then
+# The oracle's image is the slow part (~2 min on 2 cores) and depends only on the scene,
+# the size and the oracle's code: it is kept in $CACHE under a hash of those inputs and
+# rendered again only when one of them changes (then the cache is refreshed: commit it).
+CACHE=${REFERENCE_CACHE:-data/render}
+key=$({
+  cat "$SCENE"
+  echo "$SIZE"
+  find reference render io include/arealight -type f | LC_ALL=C sort | xargs cat
+} | sha256sum | cut -d' ' -f1)
+if [ "${REUSE_REFERENCE:-0}" = 1 ] && [ -f "$WORK/reference.pfm" ]; then
+  :
+elif [ -f "$CACHE/reference.key" ] && [ "$(cat "$CACHE/reference.key")" = "$key" ]; then
+  echo "render: the oracle's image from $CACHE (its inputs' hash $key)"
+  cp "$CACHE/reference.pfm" "$WORK/reference.pfm"
+  cp "$CACHE/reference.log" "$WORK/reference.log"
+  cp "$CACHE/reference.png" "$DOCS/reference.png"
+else
   render reference "oracle" --reference --threads "$THREADS" --linear "$WORK/reference.pfm"
+  mkdir -p "$CACHE"
+  cp "$WORK/reference.pfm" "$WORK/reference.log" "$DOCS/reference.png" "$CACHE/"
+  echo "$key" >"$CACHE/reference.key"
 fi
 methods=(
   "ltc|LTC|--variant dist=ggx,method=ltc,light=polygon --variant dist=phong,method=ltc,light=polygon"

@@ -498,3 +498,16 @@ TEST_CASE("render: the default variants are the selection, --variant overrides",
     CHECK(render(s, opt, ev.get(), c3.consumer()));
     INFO(c3.all());
 }
+
+TEST_CASE("render: the error image's colour-bar labels never overlap, at any width", "[render]") {
+    const ErrorScale scale;  // 1e-4 .. 1: five decades
+    for (int width : {24, 60, 90, 120, 240, 640}) {
+        const auto labels = error_legend_labels(width, scale);
+        INFO("width " << width << ": " << labels.size() << " labels");
+        REQUIRE_FALSE(labels.empty());
+        CHECK(labels.back().decade == 0);  // the top, "1", is always labelled
+        for (std::size_t i = 1; i < labels.size(); ++i) CHECK(labels[i - 1].right < labels[i].left);
+        if (width >= 240) CHECK(labels.size() == 5);  // room for every decade
+    }
+    CHECK(error_legend_labels(60, scale).size() < 5);
+}

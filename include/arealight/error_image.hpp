@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <vector>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -37,9 +38,18 @@ std::array<std::uint8_t, 3> false_colour(double t);
 // Height in pixels of the legend error_image draws below the picture.
 constexpr int kLegendHeight = 30;
 
+// The colour bar's labels in an image `width` pixels wide: per labelled power of ten k,
+// its label's left and right pixel columns. Every power of ten gets a tick; labels are
+// spaced so that none overlaps the next (every second or third decade on a narrow bar).
+struct LegendLabel {
+    int decade, left, right;
+};
+std::vector<LegendLabel> error_legend_labels(int width, const ErrorScale& scale);
+
 // The per-pixel error in false colour on a log scale from scale.lo (and below) to
-// scale.hi (and above), with a colour bar below it: a tick and a label ("1e-3", "1")
-// at each power of ten. Sizes must match (compare_images checks them).
+// scale.hi (and above), with a colour bar below it: a tick at each power of ten and the
+// labels of error_legend_labels ("1e-3", "1"). Sizes must match (compare_images checks
+// them).
 Image8 error_image(const LinearImage& image, const LinearImage& ref, const ErrorScale& scale);
 
 }  // namespace arealight
