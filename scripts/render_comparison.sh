@@ -6,6 +6,7 @@
 #
 #   bash scripts/render_comparison.sh                 # everything (the oracle: ~2 min on 2 cores)
 #   REUSE_REFERENCE=1 bash scripts/render_comparison.sh   # keep out/render/reference.pfm
+#   bash scripts/render_comparison.sh --key           # the hash the oracle's cached image is kept under
 #
 # Environment: AREALIGHT (default build/arealight), SIZE ("240 180"), THREADS (2),
 # DOCS (where the pictures and table go, default docs/render), WORK (logs and the
@@ -32,15 +33,26 @@ render() {
 # the size and the oracle's code: it is kept in $CACHE under a hash of those inputs and
 # rendered again only when one of them changes (then the cache is refreshed: commit it).
 CACHE=${REFERENCE_CACHE:-data/render}
+cached=0
+oracle_inputs=(reference/*.cpp reference/*.hpp
+  io/case.cpp io/case_io.cpp io/case_fields.hpp io/scene.cpp io/render_scene.cpp io/pfm_image.cpp
+  io/png_image.cpp io/read_file.cpp render/raycast.cpp render/render.cpp render/tone_map.cpp
+  include/arealight/{case,case_io,image,pfm_image,png_image,raycast,reference,render}.hpp
+  include/arealight/{render_scene,scene,tone_map}.hpp)
 key=$({
   cat "$SCENE"
   echo "$SIZE"
-  find reference render io include/arealight -type f | LC_ALL=C sort | xargs cat
+  cat "${oracle_inputs[@]}"
 } | sha256sum | cut -d' ' -f1)
+if [ "${1:-}" = --key ]; then
+  echo "$key"
+  exit 0
+fi
 if [ "${REUSE_REFERENCE:-0}" = 1 ] && [ -f "$WORK/reference.pfm" ]; then
   :
 elif [ -f "$CACHE/reference.key" ] && [ "$(cat "$CACHE/reference.key")" = "$key" ]; then
   echo "render: the oracle's image from $CACHE (its inputs' hash $key)"
+  cached=1
   cp "$CACHE/reference.pfm" "$WORK/reference.pfm"
   cp "$CACHE/reference.log" "$WORK/reference.log"
   cp "$CACHE/reference.png" "$DOCS/reference.png"
@@ -75,7 +87,11 @@ field() { sed -n "s/.*$2 \([0-9.e+-]*\).*/\1/p" "$WORK/$1.log" | head -1; }
   echo
   echo "| method | variants | relL2 | median | p95 | max | shading s | total s |"
   echo "|---|---|---:|---:|---:|---:|---:|---:|"
-  echo "| oracle | \`arealight reference\` per pixel | | | | | $(field reference shading) | $(field reference total) |"
+  if [ "$cached" = 1 ]; then
+    echo "| oracle | \`arealight reference\` per pixel (from $CACHE: $(field reference shading) s when rendered) | | | | | cached | cached |"
+  else
+    echo "| oracle | \`arealight reference\` per pixel | | | | | $(field reference shading) | $(field reference total) |"
+  fi
   for m in "${methods[@]}"; do
     IFS='|' read -r name title opts <<<"$m"
     variants=$(sed -n 's/^variants: //p' "$WORK/$name.log" | sed 's/; /`, `/g')
