@@ -130,8 +130,12 @@ bool rename_prefixed(const std::string& id, const std::string& tag, std::string&
 
 }  // namespace
 
+std::string library_tag(const Variant& v) {
+    return fmt::format("{}_{}", to_string(v.light), to_string(v.dist));
+}
+
 std::string library_rename(const std::string& text, const Variant& v, RenameScope scope) {
-    const std::string tag = fmt::format("{}_{}", to_string(v.light), to_string(v.dist));
+    const std::string tag = library_tag(v);
     const bool every = scope == RenameScope::EveryName;
     std::string out;
     out.reserve(text.size() + text.size() / 4);

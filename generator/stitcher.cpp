@@ -72,11 +72,6 @@ std::string upper(std::string s) {
     return s;
 }
 
-// The variant's namespace inside a library: light and distribution, which a
-// library holds at most one function for.
-std::string tag_of(const Variant& v) {
-    return fmt::format("{}_{}", to_string(v.light), to_string(v.dist));
-}
 
 // The suffix of a literal at the variant's working precision: fp64 GLSL needs lf
 // (an unsuffixed GLSL literal is fp32 and would be rounded first), C++ has none.
@@ -322,7 +317,7 @@ std::string library_function_name(const Variant& v) {
 
 std::string sampler_binding_macro(const Variant& v, const std::string& sampler) {
     const std::string bare = sampler.rfind("al_", 0) == 0 ? sampler.substr(3) : sampler;
-    return fmt::format("AREALIGHT_{}_{}_BINDING", upper(tag_of(v)), upper(bare));
+    return fmt::format("AREALIGHT_{}_{}_BINDING", upper(library_tag(v)), upper(bare));
 }
 
 std::vector<std::string> variant_templates(const Variant& v, Language lang) {

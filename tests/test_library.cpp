@@ -108,6 +108,57 @@ std::string library(const std::vector<Variant>& variants) {
     return *text;
 }
 
+// A quad light in the test shaders' own vertices q[8] (its first four corners).
+const char* const kUserQuad =
+    "vec3 q[8];\n    for (int i = 0; i < 8; ++i) q[i] = vec3(0.0);\n"
+    "    q[0] = vec3(-1.0, -1.0, 2.0); q[1] = vec3(1.0, -1.0, 2.0);\n"
+    "    q[2] = vec3(1.0, 1.0, 2.0); q[3] = vec3(-1.0, 1.0, 2.0);\n";
+
+// The call of each light type's CONTRACT.md 5 function in the test shaders: its result r.
+std::string es_call(const Variant& v) {
+    const std::string name = std::string("arealight_") + to_string(v.light) + "_" + to_string(v.dist);
+    switch (v.light) {
+        case LightType::Polygon:
+            return std::string(kUserQuad) + "    ArealightShading r = " + name + "(s, q, 4, true);\n";
+        case LightType::Disk:
+            return "ArealightShading r = " + name +
+                   "(s, vec3(0.0, 0.0, 2.0), vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0), true);\n";
+        case LightType::Sphere:
+            return "ArealightShading r = " + name + "(s, vec3(0.0, 0.0, 2.0), 0.5);\n";
+        case LightType::Ellipsoid:
+            return "vec3 ax[3];\n    ax[0] = vec3(0.5, 0.0, 0.0); ax[1] = vec3(0.0, 0.4, 0.0);\n"
+                   "    ax[2] = vec3(0.0, 0.0, 0.3);\n    ArealightShading r = " + name +
+                   "(s, vec3(0.0, 0.0, 2.0), ax);\n";
+    }
+    return "";
+}
+
+// The rest of a test compute shader after its includes: a surface s, `calls` (declaring
+// the ArealightShading values), then o[0] = `result`.
+std::string user_main(const std::string& calls,
+                             const std::string& result = "vec4(r.diffuse, r.specular, 0.0, 0.0)") {
+    return "layout(local_size_x = 1) in;\n"
+           "layout(std430, binding = 7) buffer Out { vec4 o[]; };\n"
+           "void main() {\n    ArealightSurface s;\n"
+           "    s.p = vec3(0.0); s.n = vec3(0.0, 0.0, 1.0); s.v = vec3(0.0, 0.6, 0.8);\n"
+           "    s.param = 0.3; s.f0 = 1.0;\n    " +
+           calls + "    o[0] = " + result + ";\n}\n";
+}
+
+// A user's shader `text` (named `name`) compiled with `dir` as its include folder: its
+// SPIR-V, or nullopt with glslang's messages, "FILE:LINE: message", added to `why`.
+std::optional<std::vector<uint32_t>> compile_user(const ScratchFolder& dir, const std::string& text,
+                                                  const std::string& name, std::string& why,
+                                                  bool optimize = true) {
+    CompileOptions options;
+    options.includes = true;
+    options.optimize = optimize;
+    options.include_dirs = {dir / ""};
+    return compile_glsl(text, name, options, [&](const Diagnostic& d) {
+        why += d.file + ":" + std::to_string(d.line) + ": " + d.message + "\n";
+    });
+}
+
 // contract_user.comp compiled with `dir` as its include folder (which must hold
 // contract_user_library.glsl) and run over `points`: 2 floats (diffuse, specular) per point.
 std::vector<float> run_contract_user(const ScratchFolder& dir,
@@ -118,10 +169,7 @@ std::vector<float> run_contract_user(const ScratchFolder& dir,
     const DiagnosticConsumer diag = [&](const Diagnostic& d) {
         why += d.file + ":" + std::to_string(d.line) + ": " + d.message + "\n";
     };
-    CompileOptions options;
-    options.includes = true;
-    options.include_dirs = {dir / ""};
-    const auto spirv = compile_glsl(read_text(shader), shader, options, diag);
+    const auto spirv = compile_user(dir, read_text(shader), shader, why);
     INFO(why);
     REQUIRE(spirv);
     static auto runner = VulkanRunner::create("", diag);
@@ -270,28 +318,6 @@ TEST_CASE("a library holds one variant per light type and distribution", "[libra
     CHECK(why.find("arealight_polygon_ggx") != std::string::npos);
 }
 
-// The call of each light type's CONTRACT.md 5 function in the GLSL ES test shader.
-static std::string es_call(const Variant& v) {
-    const std::string name = std::string("arealight_") + to_string(v.light) + "_" + to_string(v.dist);
-    switch (v.light) {
-        case LightType::Polygon:
-            return "vec3 q[8];\n    for (int i = 0; i < 8; ++i) q[i] = vec3(0.0);\n"
-                   "    q[0] = vec3(-1.0, -1.0, 2.0); q[1] = vec3(1.0, -1.0, 2.0);\n"
-                   "    q[2] = vec3(1.0, 1.0, 2.0); q[3] = vec3(-1.0, 1.0, 2.0);\n"
-                   "    ArealightShading r = " + name + "(s, q, 4, true);\n";
-        case LightType::Disk:
-            return "ArealightShading r = " + name +
-                   "(s, vec3(0.0, 0.0, 2.0), vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0), true);\n";
-        case LightType::Sphere:
-            return "ArealightShading r = " + name + "(s, vec3(0.0, 0.0, 2.0), 0.5);\n";
-        case LightType::Ellipsoid:
-            return "vec3 ax[3];\n    ax[0] = vec3(0.5, 0.0, 0.0); ax[1] = vec3(0.0, 0.4, 0.0);\n"
-                   "    ax[2] = vec3(0.0, 0.0, 0.3);\n    ArealightShading r = " + name +
-                   "(s, vec3(0.0, 0.0, 2.0), ax);\n";
-    }
-    return "";
-}
-
 // GLSL ES 3.10 (the mobile target of Heitz et al. 2016's LTC) has no double, no C-style
 // array initialisers and only literal layout ids: every family that has an fp32 variant
 // (its default keys, at fp32 where the default is fp64) must compile there as a user's
@@ -318,20 +344,9 @@ TEST_CASE("every fp32 family's library compiles as GLSL ES 3.10", "[library][es]
         dir.write("es_library.glsl", library({v}));
         const std::string shader =
             "#version 310 es\nprecision highp float;\nprecision highp int;\n"
-            "#include \"es_library.glsl\"\n"
-            "layout(local_size_x = 1) in;\n"
-            "layout(std430, binding = 7) buffer Out { vec4 o[]; };\n"
-            "void main() {\n    ArealightSurface s;\n"
-            "    s.p = vec3(0.0); s.n = vec3(0.0, 0.0, 1.0); s.v = vec3(0.0, 0.6, 0.8);\n"
-            "    s.param = 0.3; s.f0 = 1.0;\n    " + es_call(v) +
-            "    o[0] = vec4(r.diffuse, r.specular, 0.0, 0.0);\n}\n";
+            "#include \"es_library.glsl\"\n" + user_main(es_call(v));
         std::string why;
-        CompileOptions options;
-        options.includes = true;
-        options.include_dirs = {dir / ""};
-        const auto spirv = compile_glsl(shader, dir / "es.comp", options, [&](const Diagnostic& d) {
-            why += d.file + ":" + std::to_string(d.line) + ": " + d.message + "\n";
-        });
+        const auto spirv = compile_user(dir, shader, dir / "es.comp", why);
         INFO(canonical_name(v) << "\n" << why);
         CHECK(spirv);
     }
@@ -409,23 +424,10 @@ TEST_CASE("a renderer's macros named like the library's internal names cannot re
         }
         INFO(name << ": " << count << " names defined before the include");
         CHECK(count > 50);
-        const std::string body = std::string("#version 450\n") +
-                                 "#include \"lib.glsl\"\n"
-                                 "layout(local_size_x = 1) in;\n"
-                                 "layout(std430, binding = 7) buffer Out { vec4 o[]; };\n"
-                                 "void main() {\n    ArealightSurface s;\n"
-                                 "    s.p = vec3(0.0); s.n = vec3(0.0, 0.0, 1.0);\n"
-                                 "    s.v = vec3(0.0, 0.6, 0.8); s.param = 0.3; s.f0 = 1.0;\n    " +
-                                 es_call(v) +
-                                 "    o[0] = vec4(r.diffuse, r.specular, 0.0, 0.0);\n}\n";
+        const std::string body = "#version 450\n#include \"lib.glsl\"\n" + user_main(es_call(v));
         auto compile = [&](const std::string& text) {
             std::string why;
-            CompileOptions options;
-            options.includes = true;
-            options.include_dirs = {dir / ""};
-            auto spirv = compile_glsl(text, dir / "user.comp", options, [&](const Diagnostic& d) {
-                why += d.file + ":" + std::to_string(d.line) + ": " + d.message + "\n";
-            });
+            auto spirv = compile_user(dir, text, dir / "user.comp", why);
             INFO(why);
             REQUIRE(spirv);
             return *spirv;
@@ -475,20 +477,9 @@ TEST_CASE("within one library, identical tables share one sampler", "[library]")
     CHECK_FALSE(tables[2].contains("also"));
 
     dir.write("two.glsl", text);
-    const std::string shader =
-        "#version 450\n#include \"two.glsl\"\nlayout(local_size_x = 1) in;\n"
-        "layout(std430, binding = 7) buffer Out { vec4 o[]; };\n"
-        "void main() {\n    ArealightSurface s;\n"
-        "    s.p = vec3(0.0); s.n = vec3(0.0, 0.0, 1.0); s.v = vec3(0.0, 0.6, 0.8);\n"
-        "    s.param = 0.3; s.f0 = 1.0;\n"
-        "    ArealightShading r = arealight_sphere_ggx(s, vec3(0.0, 0.0, 2.0), 0.5);\n"
-        "    o[0] = vec4(r.diffuse, r.specular, 0.0, 0.0);\n}\n";
-    CompileOptions options;
-    options.includes = true;
-    options.include_dirs = {dir / ""};
-    const auto spirv = compile_glsl(shader, dir / "two.comp", options, [&](const Diagnostic& d) {
-        why += d.file + ":" + std::to_string(d.line) + ": " + d.message + "\n";
-    });
+    const std::string shader = "#version 450\n#include \"two.glsl\"\n" +
+                               user_main(es_call(variant("dist=ggx,method=ltc,light=sphere")));
+    const auto spirv = compile_user(dir, shader, dir / "two.comp", why);
     INFO(why);
     CHECK(spirv);
 }
@@ -503,26 +494,14 @@ TEST_CASE("two separately generated LTC libraries bind distinct tables by defaul
     dir.write("b.glsl", library({variant("dist=beckmann,method=ltc,light=polygon")}));
     auto bindings = [&](const std::string& prolog) {
         const std::string shader =
-            "#version 450\n" + prolog +
-            "#include \"g.glsl\"\n#include \"b.glsl\"\nlayout(local_size_x = 1) in;\n"
-            "layout(std430, binding = 30) buffer Out { vec4 o[]; };\n"
-            "void main() {\n    ArealightSurface s;\n"
-            "    s.p = vec3(0.0); s.n = vec3(0.0, 0.0, 1.0); s.v = vec3(0.0, 0.6, 0.8);\n"
-            "    s.param = 0.3; s.f0 = 1.0;\n    vec3 q[8];\n"
-            "    for (int i = 0; i < 8; ++i) q[i] = vec3(0.0);\n"
-            "    q[0] = vec3(-1.0, -1.0, 2.0); q[1] = vec3(1.0, -1.0, 2.0);\n"
-            "    q[2] = vec3(1.0, 1.0, 2.0); q[3] = vec3(-1.0, 1.0, 2.0);\n"
-            "    ArealightShading a = arealight_polygon_ggx(s, q, 4, true);\n"
-            "    ArealightShading b = arealight_polygon_beckmann(s, q, 4, true);\n"
-            "    o[0] = vec4(a.diffuse, a.specular, b.diffuse, b.specular);\n}\n";
+            "#version 450\n" + prolog + "#include \"g.glsl\"\n#include \"b.glsl\"\n" +
+            user_main(std::string(kUserQuad) +
+                          "    ArealightShading a = arealight_polygon_ggx(s, q, 4, true);\n"
+                          "    ArealightShading b = arealight_polygon_beckmann(s, q, 4, true);\n",
+                      "vec4(a.diffuse, a.specular, b.diffuse, b.specular)");
         std::string why;
-        CompileOptions options;
-        options.includes = true;
-        options.optimize = false;  // keeps the samplers' names
-        options.include_dirs = {dir / ""};
-        const auto spirv = compile_glsl(shader, dir / "two.comp", options, [&](const Diagnostic& d) {
-            why += d.file + ":" + std::to_string(d.line) + ": " + d.message + "\n";
-        });
+        // Unoptimized: keeps the samplers' names.
+        const auto spirv = compile_user(dir, shader, dir / "two.comp", why, false);
         INFO(why);
         REQUIRE(spirv);
         std::map<std::string, int> found;

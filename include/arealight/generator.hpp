@@ -68,6 +68,9 @@ std::string sampler_binding_macro(const Variant& v, const std::string& sampler);
 // swizzle-shaped members (x, rgb, st), so that no renderer's macro can reach the
 // library's locals, parameters or struct members (the GLSL library).
 enum class RenameScope { Prefixed, EveryName };
+// The variant's namespace inside a library, "<light>_<dist>" ("polygon_ggx"): light and
+// distribution, which a library holds at most one function for.
+std::string library_tag(const Variant& v);
 // Template text moved into the variant's namespace, as the library writes it:
 // al_x -> al_<light>_<dist>_x, AL_X -> AL_<LIGHT>_<DIST>_X, AlX -> Al<Light><Dist>X,
 // the precision words (real, rvec3, ...) -> al_<light>_<dist>_real, ..., and with
