@@ -43,11 +43,14 @@ std::string make_escaped(const std::string& path) {
 CLI::App* add_compile_command(CLI::App& app, CompileArgs& args) {
     auto* cmd = app.add_subcommand(
         "compile",
-        "Compile a GLSL shader that may #include arealight libraries to validated, optimized "
-        "SPIR-V (Vulkan 1.1, SPIR-V 1.3). The stage comes from the extension (.vert .tesc "
-        ".tese .geom .frag .comp). #include \"name\" is searched beside the including file, "
-        "then in each -I folder; no #extension line is needed. Nothing is written on error");
-    cmd->add_option("shader", args.shader, "GLSL source file")->required();
+        "Compile a GLSL or HLSL shader that may #include arealight libraries to validated, "
+        "optimized SPIR-V (Vulkan 1.1, SPIR-V 1.3 unless --target-env says otherwise). GLSL's "
+        "stage comes from the extension (.vert .tesc .tese .geom .frag .comp); a .hlsl file "
+        "is HLSL (glslang's HLSL front end, then SPIRV-Tools' legalization), its stage from "
+        "the extension before .hlsl (x.frag.hlsl) or --stage, its entry function -E. "
+        "#include \"name\" is searched beside the including file, then in each -I folder; "
+        "no #extension line is needed. Nothing is written on error");
+    cmd->add_option("shader", args.shader, "GLSL or HLSL (.hlsl) source file")->required();
     cmd->add_option("-o,--out", args.out, "SPIR-V file to write")->required();
     cmd->add_option("-I,--include-dir", args.include_dirs, "include folder (repeatable, in order)");
     cmd->add_option("--stage", args.stage, "stage when the extension does not say it")
@@ -55,6 +58,13 @@ CLI::App* add_compile_command(CLI::App& app, CompileArgs& args) {
     cmd->add_option("--depfile", args.depfile,
                     "also write a Makefile rule: OUT depends on SHADER and every included file "
                     "(CMake's DEPFILE, ninja's depfile)");
+    cmd->add_option("-E,--entry", args.entry,
+                    "HLSL: the entry function (default main); the module's entry point is "
+                    "named main");
+    cmd->add_option("--target-env", args.target_env,
+                    "Vulkan version the SPIR-V is for: vulkan1.0 (SPIR-V 1.0), vulkan1.1 (1.3, "
+                    "the default), vulkan1.2 (1.5), vulkan1.3 (1.6)")
+        ->check(CLI::IsMember({"vulkan1.0", "vulkan1.1", "vulkan1.2", "vulkan1.3"}));
     cmd->add_flag("--no-opt", args.no_opt, "skip the SPIRV-Tools performance passes");
     return cmd;
 }
@@ -64,15 +74,34 @@ int run_compile(const CompileArgs& args) {
     options.optimize = !args.no_opt;
     options.includes = true;
     options.include_dirs = args.include_dirs;
-    const auto stage = args.stage.empty() ? stage_from_path(args.shader)
+    options.language = language_from_path(args.shader);
+    const bool hlsl = options.language == SourceLanguage::Hlsl;
+    // x.frag.hlsl: the stage is the extension before .hlsl.
+    const std::string stage_name =
+        hlsl ? args.shader.substr(0, args.shader.size() - 5) : args.shader;
+    const auto stage = args.stage.empty() ? stage_from_path(stage_name)
                                           : stage_from_path("." + args.stage);
     if (!stage) {
-        print_compiler_diagnostic({Severity::Error, args.shader, 0,
-                          "no shader stage for this extension: name it .vert, .tesc, .tese, "
-                          ".geom, .frag or .comp, or give --stage"});
+        print_compiler_diagnostic(
+            {Severity::Error, args.shader, 0,
+             hlsl ? "no shader stage for this HLSL file: name it x.vert.hlsl, x.frag.hlsl, "
+                    "x.comp.hlsl (or .tesc, .tese, .geom before .hlsl), or give --stage"
+                  : "no shader stage for this extension: name it .vert, .tesc, .tese, .geom, "
+                    ".frag or .comp, or give --stage"});
         return kUsage;
     }
     options.stage = *stage;
+    if (!args.entry.empty() && !hlsl) {
+        print_compiler_diagnostic({Severity::Error, args.shader, 0,
+                                   "-E names an HLSL entry function; a GLSL shader starts at "
+                                   "main()"});
+        return kUsage;
+    }
+    if (hlsl) {
+        options.entry = "main";
+        options.source_entry = args.entry.empty() ? "main" : args.entry;
+    }
+    if (!args.target_env.empty()) options.target_env = *target_env_from_string(args.target_env);
 
     std::ifstream in(args.shader, std::ios::binary);
     if (!in) {
@@ -83,7 +112,7 @@ int run_compile(const CompileArgs& args) {
                              std::istreambuf_iterator<char>());
 
     std::vector<std::string> included;
-    const auto spirv = compile_glsl(source, args.shader, options, print_compiler_diagnostic, &included);
+    const auto spirv = compile_shader(source, args.shader, options, print_compiler_diagnostic, &included);
     if (!spirv) return kBadInput;
 
     const std::string bytes(reinterpret_cast<const char*>(spirv->data()),

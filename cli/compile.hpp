@@ -15,6 +15,8 @@ struct CompileArgs {
     std::vector<std::string> include_dirs;
     std::string stage;    // empty: from the shader's extension
     std::string depfile;  // empty: none
+    std::string entry;       // HLSL entry function; empty: main
+    std::string target_env;  // empty: vulkan1.1
     bool no_opt = false;
 };
 

@@ -47,10 +47,23 @@ LibraryOptions measured_comments(const std::vector<Variant>& variants) {
 // stage (a written library is a library that compiles), then written.
 int write_library(const std::vector<Variant>& variants, const GenerateArgs& args,
                   const DiagnosticConsumer& diag) {
-    auto text = generate_library(variants, Language::Glsl, measured_comments(variants), diag);
+    const Language lang = args.lang == "hlsl" ? Language::Hlsl : Language::Glsl;
+    for (const auto& v : variants) {
+        if (language_supports(lang, v)) continue;
+        if (diag)
+            diag({Severity::Error, "", 0,
+                  fmt::format("generate: the HLSL library is fp32 only, and {} computes at {} "
+                              "(name precision=fp32 where the family offers it)",
+                              canonical_name(v), to_string(effective_precision(v)))});
+        return kBadInput;
+    }
+    auto text = generate_library(variants, lang, measured_comments(variants), diag);
     if (!text) return kBadInput;
-    for (const auto& v : variants)
-        if (!build_spirv(v, true, diag)) return kRuntime;
+    for (const auto& v : variants) {
+        const bool built = lang == Language::Hlsl ? build_hlsl_spirv(v, true, diag).has_value()
+                                                  : build_spirv(v, true, diag).has_value();
+        if (!built) return kRuntime;
+    }
     if (!args.tables.empty() && !write_library_tables(variants, args.tables, diag)) return kRuntime;
     if (!write_file_atomic(args.library, *text, diag)) return kRuntime;
     return kOk;
@@ -71,9 +84,18 @@ CLI::App* add_generate_command(CLI::App& app, GenerateArgs& args) {
                     "7), each the cheapest that meets its quality by the measured data built in")
         ->excludes(variant);
     cmd->add_option("--glsl", args.glsl, "kernel GLSL file to write (one variant)");
+    cmd->add_option("--hlsl", args.hlsl,
+                    "the HLSL validation kernel to write (one fp32 variant): the HLSL library "
+                    "around templates/library/kernel.hlsl");
     cmd->add_option("--spv", args.spv, "kernel SPIR-V file to write (one variant)");
     cmd->add_option("--library", args.library,
-                    "write the shading library (GLSL to #include, CONTRACT.md 5) here");
+                    "write the shading library (GLSL or, with --lang hlsl, HLSL to #include, "
+                    "CONTRACT.md 5) here");
+    cmd->add_option("--lang", args.lang,
+                    "the library's language: glsl (4.50; also GLSL ES 3.10) or hlsl (Shader "
+                    "Model 6 syntax, fp32 variants)")
+        ->check(CLI::IsMember({"glsl", "hlsl"}))
+        ->capture_default_str();
     cmd->add_option("--tables", args.tables,
                     "with --library: write the tables its samplers read, and tables.json, "
                     "into this folder");
@@ -90,8 +112,12 @@ int run_generate(const GenerateArgs& args, const DiagnosticConsumer& diag) {
     if (args.scene.empty() && args.variants.empty()) return usage("--variant or --scene is required");
     if (args.library.empty() && args.variants.size() != 1)
         return usage("one --variant, or --library for several");
-    if (!args.library.empty() && (!args.glsl.empty() || !args.spv.empty()))
-        return usage("--library writes a library; --glsl and --spv a single variant's kernel");
+    if (!args.library.empty() && (!args.glsl.empty() || !args.spv.empty() || !args.hlsl.empty()))
+        return usage("--library writes a library; --glsl, --hlsl and --spv a single variant's "
+                     "kernel");
+    if (args.library.empty() && args.lang != "glsl")
+        return usage("--lang chooses the library's language (with --library); a variant's "
+                     "HLSL kernel is --hlsl FILE");
     if (args.library.empty() && !args.tables.empty()) return usage("--tables needs --library");
     std::vector<Variant> variants;
     if (!args.scene.empty()) {
@@ -118,8 +144,20 @@ int run_generate(const GenerateArgs& args, const DiagnosticConsumer& diag) {
     // Compile even when only GLSL is asked for: a written shader is a valid shader.
     auto spirv = generated_kernel_spirv(v, diag, !args.no_opt);
     if (!spirv) return kRuntime;
-    if (args.glsl.empty() && args.spv.empty()) fmt::print("{}", glsl);
+    if (args.glsl.empty() && args.spv.empty() && args.hlsl.empty()) fmt::print("{}", glsl);
     if (!args.glsl.empty() && !write_file_atomic(args.glsl, glsl, diag)) return kRuntime;
+    if (!args.hlsl.empty()) {
+        if (!language_supports(Language::Hlsl, v)) {
+            if (diag)
+                diag({Severity::Error, "", 0,
+                      fmt::format("generate: the HLSL library is fp32 only, and {} computes at {}",
+                                  canonical_name(v), to_string(effective_precision(v)))});
+            return kBadInput;
+        }
+        if (!build_hlsl_spirv(v, !args.no_opt, diag, KernelOutputs::All)) return kRuntime;
+        if (!write_file_atomic(args.hlsl, generate_hlsl_kernel(v, KernelOutputs::All), diag))
+            return kRuntime;
+    }
     if (!args.spv.empty()) {
         const std::string bytes(reinterpret_cast<const char*>(spirv->data()),
                                 spirv->size() * sizeof(uint32_t));

@@ -15,7 +15,8 @@ namespace arealight::cli {
 struct GenerateArgs {
     std::vector<std::string> variants;
     std::string scene;  // instead of variants: the scene's selection
-    std::string glsl, spv, library, tables;
+    std::string glsl, hlsl, spv, library, tables;
+    std::string lang = "glsl";  // the library's language
     bool no_opt = false;
 };
 

@@ -75,7 +75,8 @@ int run_variants() {
 }
 
 int run_eval(const std::string& cases_path, const std::string& variant_name,
-             const std::string& backend, const std::string& device, const std::string& out_path) {
+             const std::string& backend, const std::string& device, const std::string& lang,
+             const std::string& out_path) {
     auto variant = arealight::parse_variant(variant_name, print_diagnostic);
     if (!variant) return kBadInput;
     auto cases = arealight::read_cases(cases_path, print_diagnostic);
@@ -83,6 +84,19 @@ int run_eval(const std::string& cases_path, const std::string& variant_name,
     arealight::EvalOptions opt;
     opt.backend = backend == "cpu" ? arealight::Backend::Cpu : arealight::Backend::Vulkan;
     opt.device = device;
+    opt.language = lang == "hlsl" ? arealight::Language::Hlsl : arealight::Language::Glsl;
+    if (opt.language == arealight::Language::Hlsl && opt.backend != arealight::Backend::Vulkan) {
+        print_diagnostic({arealight::Severity::Error, "", 0,
+                          "eval: --lang hlsl runs the HLSL kernel on Vulkan: give --backend vulkan"});
+        return kUsage;
+    }
+    if (!arealight::language_supports(opt.language, *variant)) {
+        print_diagnostic({arealight::Severity::Error, "", 0,
+                          "eval: the HLSL library is fp32 only, and " +
+                              arealight::canonical_name(*variant) + " computes at " +
+                              arealight::to_string(arealight::effective_precision(*variant))});
+        return kBadInput;
+    }
     auto evaluator = arealight::Evaluator::create(opt, print_diagnostic);
     if (!evaluator) return kRuntime;
     arealight::EvalStats stats;
@@ -318,7 +332,7 @@ int main(int argc, char** argv) {
 
     auto* variants = app.add_subcommand("variants", "List every valid variant name, one per line");
 
-    std::string cases_path, out_path, variant, backend = "vulkan", device;
+    std::string cases_path, out_path, variant, backend = "vulkan", device, eval_lang = "glsl";
     auto* eval = app.add_subcommand("eval", "Run one shader variant on every case it applies to");
     eval->add_option("--cases", cases_path, "arealight-cases/1 file")->required();
     eval->add_option("--variant", variant,
@@ -328,6 +342,11 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"cpu", "vulkan"}))
         ->capture_default_str();
     eval->add_option("--device", device, "Vulkan device name substring (default: first device)");
+    eval->add_option("--lang", eval_lang,
+                     "vulkan: run the kernel around the GLSL library or the HLSL one (fp32 "
+                     "variants; glslang's HLSL front end)")
+        ->check(CLI::IsMember({"glsl", "hlsl"}))
+        ->capture_default_str();
     eval->add_option("--out", out_path, "arealight-results/1 file to write")->required();
 
     arealight::cli::GenerateArgs generate_args;
@@ -451,7 +470,7 @@ int main(int argc, char** argv) {
     if (variants->parsed()) return run_variants();
     if (report->parsed()) return run_report(rep, false);
     if (sweep->parsed()) return run_report(swp, true);
-    if (eval->parsed()) return run_eval(cases_path, variant, backend, device, out_path);
+    if (eval->parsed()) return run_eval(cases_path, variant, backend, device, eval_lang, out_path);
     if (generate->parsed()) return arealight::cli::run_generate(generate_args, print_diagnostic);
     if (bench->parsed())
         return run_bench(cases_path, bench_variants, exponents, backend, min_cases, repeats,

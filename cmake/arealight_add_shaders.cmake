@@ -1,6 +1,7 @@
 # arealight_add_shaders(<target>
 #   OUTPUT <file.glsl>                      # the shading library (CONTRACT.md section 5)
 #   VARIANTS <name>... | SCENE <scene.json>
+#   [LANG GLSL|HLSL]                        # the library's language (GLSL by default)
 #   [SPIRV <shader source>...]              # compiled to <name>.spv beside OUTPUT
 #   [TABLES <dir>])                         # `arealight generate --tables <dir>`
 #
@@ -10,6 +11,7 @@
 # change, which both Ninja and Makefiles see as an input. A SPIRV source `dir/x.comp` becomes
 # `x.comp.spv` in OUTPUT's folder, compiled by `arealight compile` with that folder on the
 # include path; it depends on the source, the library, and (depfile) every file it includes.
+# An HLSL source is named for its stage, `x.frag.hlsl`, and starts at main().
 #
 # If <target> exists it is made to depend on the outputs; otherwise it is created as a custom
 # target (in ALL) that builds them. Relative OUTPUT and TABLES are in the current binary
@@ -23,7 +25,7 @@ if(POLICY CMP0116)
 endif()
 
 function(arealight_add_shaders target)
-  cmake_parse_arguments(PARSE_ARGV 1 arg "" "OUTPUT;SCENE;TABLES" "VARIANTS;SPIRV")
+  cmake_parse_arguments(PARSE_ARGV 1 arg "" "OUTPUT;SCENE;TABLES;LANG" "VARIANTS;SPIRV")
   if(arg_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "arealight_add_shaders(${target}): unknown arguments: ${arg_UNPARSED_ARGUMENTS}")
   endif()
@@ -32,6 +34,9 @@ function(arealight_add_shaders target)
   endif()
   if((arg_VARIANTS AND arg_SCENE) OR (NOT arg_VARIANTS AND NOT arg_SCENE))
     message(FATAL_ERROR "arealight_add_shaders(${target}): give either VARIANTS <name>... or SCENE <file>")
+  endif()
+  if(arg_LANG AND NOT arg_LANG MATCHES "^(GLSL|HLSL)$")
+    message(FATAL_ERROR "arealight_add_shaders(${target}): LANG is GLSL or HLSL, not ${arg_LANG}")
   endif()
   if(NOT TARGET arealight::arealight)
     message(FATAL_ERROR "arealight_add_shaders(${target}): arealight::arealight is not defined (find_package(arealight))")
@@ -42,6 +47,9 @@ function(arealight_add_shaders target)
   set(work_dir "${CMAKE_CURRENT_BINARY_DIR}/arealight/${target}")
 
   set(generate_args)
+  if(arg_LANG STREQUAL "HLSL")
+    list(APPEND generate_args --lang hlsl)
+  endif()
   set(inputs)
   if(arg_SCENE)
     get_filename_component(scene "${arg_SCENE}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")

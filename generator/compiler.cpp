@@ -20,7 +20,43 @@ namespace arealight {
 namespace {
 
 // Must match the client/target given to glslang (Vulkan 1.1 guarantees SPIR-V 1.3).
-constexpr spv_target_env kTargetEnv = SPV_ENV_VULKAN_1_1;
+constexpr spv_target_env kTargetEnv = SPV_ENV_VULKAN_1_1;  // disassemble()
+
+spv_target_env spirv_tools_env(TargetEnv env) {
+    switch (env) {
+        case TargetEnv::Vulkan1_0:
+            return SPV_ENV_VULKAN_1_0;
+        case TargetEnv::Vulkan1_1:
+            return SPV_ENV_VULKAN_1_1;
+        case TargetEnv::Vulkan1_2:
+            return SPV_ENV_VULKAN_1_2;
+        case TargetEnv::Vulkan1_3:
+            return SPV_ENV_VULKAN_1_3;
+    }
+    return SPV_ENV_VULKAN_1_1;
+}
+
+// glslang's client and SPIR-V versions for a Vulkan version: each Vulkan's newest SPIR-V.
+void set_glslang_env(glslang::TShader& shader, TargetEnv env) {
+    switch (env) {
+        case TargetEnv::Vulkan1_0:
+            shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_0);
+            shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
+            return;
+        case TargetEnv::Vulkan1_1:
+            shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1);
+            shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
+            return;
+        case TargetEnv::Vulkan1_2:
+            shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_2);
+            shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_5);
+            return;
+        case TargetEnv::Vulkan1_3:
+            shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_3);
+            shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_6);
+            return;
+    }
+}
 constexpr int kDefaultGlslVersion = 450;
 
 // glslang needs InitializeProcess() before the first TShader and FinalizeProcess() once at the
@@ -170,9 +206,9 @@ void rename_entry_point(std::vector<uint32_t>& spirv, const std::string& name) {
     }
 }
 
-bool validate(const std::vector<uint32_t>& spirv, const std::string& stage,
+bool validate(const std::vector<uint32_t>& spirv, spv_target_env env, const std::string& stage,
               const std::string& source_name, Reporter& report) {
-    spvtools::SpirvTools tools(kTargetEnv);
+    spvtools::SpirvTools tools(env);
     tools.SetMessageConsumer(spirv_tools_consumer("spirv-val", source_name, report));
     if (tools.Validate(spirv)) return true;
     report.error(source_name, "SPIR-V validation failed " + stage);
@@ -215,12 +251,29 @@ std::optional<std::vector<uint32_t>> glsl_to_spirv(const std::string& source,
     const int length = static_cast<int>(source.size());
     const char* name = source_name.c_str();
     shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
-    shader.setEnvInput(glslang::EShSourceGlsl, stage, glslang::EShClientVulkan, 100);
-    shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1);
-    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
-    const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
+    const bool hlsl = options.language == SourceLanguage::Hlsl;
+    shader.setEnvInput(hlsl ? glslang::EShSourceHlsl : glslang::EShSourceGlsl, stage,
+                       glslang::EShClientVulkan, 100);
+    // glslang 12's HLSL front end marks structured buffers BufferBlock, which SPIR-V 1.4
+    // removed: HLSL for Vulkan 1.2 and 1.3 is SPIR-V 1.3 (which every Vulkan >= 1.1 takes),
+    // validated for the Vulkan asked for.
+    set_glslang_env(shader, hlsl && options.target_env > TargetEnv::Vulkan1_1 ? TargetEnv::Vulkan1_1
+                                                                              : options.target_env);
+    auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
+    if (hlsl) {
+        // HLSL names its entry function; the module's entry point is options.entry. Its
+        // preprocessor takes #include and #line "file" without an extension.
+        messages = static_cast<EShMessages>(messages | EShMsgReadHlsl);
+        shader.setEntryPoint(options.entry.c_str());
+        shader.setSourceEntryPoint(
+            (options.source_entry.empty() ? options.entry : options.source_entry).c_str());
+        // A Texture2D and the SamplerState it is sampled with become one combined image
+        // sampler at the texture's binding: the descriptors the GLSL form's sampler2D
+        // takes, so both libraries bind their tables the same way (tables.json).
+        shader.setTextureSamplerTransformMode(EShTexSampTransUpgradeTextureRemoveSampler);
+    }
 
-    if (options.includes) shader.setPreamble(kIncludePreamble);
+    if (options.includes && !hlsl) shader.setPreamble(kIncludePreamble);
     FileIncluder includer(options.include_dirs);
     const bool parsed =
         shader.parse(GetDefaultResources(), kDefaultGlslVersion, false, messages, includer);
@@ -236,6 +289,15 @@ std::optional<std::vector<uint32_t>> glsl_to_spirv(const std::string& source,
     program.addShader(&shader);
     const bool linked = program.link(messages);
     report_info_log(program.getInfoLog(), source_name, report);
+    // Without the named entry function glslang's HLSL front end warns and writes an empty
+    // main(): an error here.
+    if (hlsl && std::string(program.getInfoLog()).find("Entry point not found") != std::string::npos) {
+        report.error(source_name, "no entry function " +
+                                      (options.source_entry.empty() ? options.entry
+                                                                    : options.source_entry) +
+                                      " in the HLSL shader (name it with -E)");
+        return std::nullopt;
+    }
     if (!linked || report.any_error()) {
         if (!report.any_error()) report.error(source_name, "glslang: linking failed");
         return std::nullopt;
@@ -254,13 +316,13 @@ std::optional<std::vector<uint32_t>> glsl_to_spirv(const std::string& source,
         report.error(source_name, "glslang produced no SPIR-V");
         return std::nullopt;
     }
-    if (options.entry != "main") rename_entry_point(spirv, options.entry);
+    if (!hlsl && options.entry != "main") rename_entry_point(spirv, options.entry);
     return spirv;
 }
 
 }  // namespace
 
-std::optional<std::vector<uint32_t>> compile_glsl(const std::string& source,
+std::optional<std::vector<uint32_t>> compile_shader(const std::string& source,
                                                   const std::string& source_name,
                                                   const CompileOptions& options,
                                                   const DiagnosticConsumer& diag,
@@ -271,21 +333,29 @@ std::optional<std::vector<uint32_t>> compile_glsl(const std::string& source,
         report.error(source_name, "CompileOptions::entry is empty");
         return std::nullopt;
     }
+    const spv_target_env env = spirv_tools_env(options.target_env);
     std::optional<std::vector<uint32_t>> spirv =
         glsl_to_spirv(source, source_name, options, report, included_files);
     if (!spirv) return std::nullopt;
-    if (!validate(*spirv, "after glslang", source_name, report)) return std::nullopt;
-    if (!options.optimize) return spirv;
+    // glslang's HLSL output is valid only after legalization (HLSL passes resources and
+    // structs holding them by value; spirv-opt's --legalize-hlsl), whether optimized or not.
+    const bool legalize = options.language == SourceLanguage::Hlsl;
+    if (!legalize && !validate(*spirv, env, "after glslang", source_name, report)) return std::nullopt;
+    if (!options.optimize && !legalize) return spirv;
 
-    spvtools::Optimizer optimizer(kTargetEnv);
+    spvtools::Optimizer optimizer(env);
     optimizer.SetMessageConsumer(spirv_tools_consumer("spirv-opt", source_name, report));
-    optimizer.RegisterPerformancePasses();
+    if (legalize) optimizer.RegisterLegalizationPasses();
+    if (options.optimize) optimizer.RegisterPerformancePasses();
     std::vector<uint32_t> optimized;
     if (!optimizer.Run(spirv->data(), spirv->size(), &optimized)) {
         report.error(source_name, "spirv-opt failed");
         return std::nullopt;
     }
-    if (!validate(optimized, "after spirv-opt", source_name, report)) return std::nullopt;
+    if (!validate(optimized, env, options.optimize ? "after spirv-opt" : "after legalization",
+                  source_name, report)) {
+        return std::nullopt;
+    }
     return optimized;
 }
 
@@ -317,6 +387,37 @@ const char* to_string(ShaderStage stage) {
             return "comp";
     }
     return "comp";
+}
+
+SourceLanguage language_from_path(const std::string& path) {
+    const std::size_t dot = path.rfind('.');
+    const std::size_t slash = path.find_last_of("/\\");
+    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) {
+        return SourceLanguage::Glsl;
+    }
+    return path.substr(dot + 1) == "hlsl" ? SourceLanguage::Hlsl : SourceLanguage::Glsl;
+}
+
+const char* to_string(TargetEnv env) {
+    switch (env) {
+        case TargetEnv::Vulkan1_0:
+            return "vulkan1.0";
+        case TargetEnv::Vulkan1_1:
+            return "vulkan1.1";
+        case TargetEnv::Vulkan1_2:
+            return "vulkan1.2";
+        case TargetEnv::Vulkan1_3:
+            return "vulkan1.3";
+    }
+    return "vulkan1.1";
+}
+
+std::optional<TargetEnv> target_env_from_string(const std::string& name) {
+    for (TargetEnv e : {TargetEnv::Vulkan1_0, TargetEnv::Vulkan1_1, TargetEnv::Vulkan1_2,
+                        TargetEnv::Vulkan1_3}) {
+        if (name == to_string(e)) return e;
+    }
+    return std::nullopt;
 }
 
 std::size_t spirv_instruction_count(const std::vector<uint32_t>& spirv) {

@@ -77,7 +77,7 @@ std::string upper(std::string s) {
 // (an unsuffixed GLSL literal is fp32 and would be rounded first), C++ has none.
 std::string literal_suffix(const Variant& v, Language lang) {
     if (effective_precision(v) != Precision::Fp64) return "f";
-    return lang == Language::Glsl ? "lf" : "";
+    return lang == Language::Cpp ? "" : "lf";
 }
 
 // Templates write a literal at the working precision as AL_R(1.5). glslang cannot
@@ -103,17 +103,22 @@ std::string expand_literals(const std::string& text, const std::string& suffix) 
 // The few spellings GLSL and C++ do not share, as macros the templates use, and
 // the working precision: the templates compute in `real` and `rvec2..4`.
 void emit_language_macros(std::string& out, const Variant& v, Language lang) {
-    out += lang == Language::Glsl ? "#define AL_LANG_GLSL 1\n" : "#define AL_LANG_CPP 1\n";
-    out += lang == Language::Glsl ? "#define AL_INOUT(T) inout T\n" : "#define AL_INOUT(T) T&\n";
+    const bool glsl = lang == Language::Glsl;
+    out += fmt::format("#define AL_LANG_{} 1\n", upper(to_string(lang)));
+    out += lang == Language::Cpp ? "#define AL_INOUT(T) T&\n" : "#define AL_INOUT(T) inout T\n";
     // A loop of constant trip count the GPU should run unrolled: SPIR-V's Unroll loop
     // control, which Mesa's NIR (RADV, lavapipe) and other drivers honour; the C++
     // mirror's compiler decides for itself.
-    out += lang == Language::Glsl ? "#define AL_UNROLL [[unroll]]\n" : "#define AL_UNROLL\n";
+    out += glsl ? "#define AL_UNROLL [[unroll]]\n"
+                : (lang == Language::Hlsl ? "#define AL_UNROLL [unroll]\n" : "#define AL_UNROLL\n");
     // A constant array's initialiser: GLSL ES 3.10 has no C-style braces, only the array
-    // constructor real[N](...); C++ has no array constructor. Written
+    // constructor real[N](...); C++ and HLSL have no array constructor. Written
     // AL_ARRAY_BEGIN(real, 8) a, b, ... AL_ARRAY_END.
-    out += lang == Language::Glsl ? "#define AL_ARRAY_BEGIN(T, N) T[N](\n#define AL_ARRAY_END )\n"
-                                  : "#define AL_ARRAY_BEGIN(T, N) {\n#define AL_ARRAY_END }\n";
+    out += glsl ? "#define AL_ARRAY_BEGIN(T, N) T[N](\n#define AL_ARRAY_END )\n"
+                : "#define AL_ARRAY_BEGIN(T, N) {\n#define AL_ARRAY_END }\n";
+    // frexp's exponent (common/common.glsl al_log): an int in GLSL and C++, a float in HLSL.
+    out += lang == Language::Hlsl ? "#define AL_FREXP_EXPONENT float\n"
+                                  : "#define AL_FREXP_EXPONENT int\n";
     // The half-precision part of a variant computes in hreal and hvec2..4: fp16 where
     // the precision is fp16 (the mirror's al_half rounds every operation to fp16,
     // include/arealight/mirror_support.hpp), else the working precision.
@@ -166,6 +171,9 @@ void emit_tables(std::string& out, const Variant& v, Language lang, const std::s
         if (lang == Language::Glsl) {
             out += fmt::format("const real {}[{}] = real[{}]({});\n", name, values.size(),
                                values.size(), items);
+        } else if (lang == Language::Hlsl) {
+            // `static` is added after the renaming (hlsl_static_constants).
+            out += fmt::format("const real {}[{}] = {{{}}};\n", name, values.size(), items);
         } else {
             out += fmt::format("static const real {}[{}] = {{{}}};\n", name, values.size(), items);
         }
@@ -187,6 +195,75 @@ std::string shared_sampler_marker(std::size_t entry) {
     return fmt::format("// arealight shared sampler {}\n", entry);
 }
 
+// In HLSL a table is a texture and a sampler state, named after the renamed sampler:
+// the same kind of marker, replaced after the renaming by their one-line declaration.
+std::string hlsl_table_marker(std::size_t entry) {
+    return fmt::format("// arealight hlsl table {}\n", entry);
+}
+
+std::string hlsl_table_declaration(const std::string& renamed, const std::string& reg) {
+    return fmt::format(
+        "Texture2D<float4> {0}_texture : AREALIGHT_HLSL_REGISTER(t, {1}, AREALIGHT_SPACE); "
+        "SamplerState {0}_sampler : AREALIGHT_HLSL_REGISTER(s, {1}, AREALIGHT_SPACE);\n",
+        renamed, reg);
+}
+
+// GLSL's words as the HLSL library spells them, defined before its text and undefined
+// after it (a renderer's own HLSL after the include never sees them): the templates are
+// written in GLSL, and this is the whole difference at fp32 but for what the language
+// macros carry (inout, [unroll], array initialisers, frexp's exponent), global
+// constants (static const) and the tables (textureLod on a texture and sampler pair).
+struct HlslWord {
+    const char* glsl;
+    const char* hlsl;
+};
+constexpr HlslWord kHlslWords[] = {
+    {"vec2", "float2"},   {"vec3", "float3"},      {"vec4", "float4"},      {"ivec2", "int2"},
+    {"ivec3", "int3"},    {"ivec4", "int4"},       {"uvec2", "uint2"},      {"uvec3", "uint3"},
+    {"uvec4", "uint4"},   {"bvec2", "bool2"},      {"bvec3", "bool3"},      {"bvec4", "bool4"},
+    {"inversesqrt", "rsqrt"}, {"mix", "lerp"},     {"fract", "frac"},
+    {"textureLod(t, uv, lod)", "AREALIGHT_HLSL_SAMPLE(t, uv, lod)"},
+};
+
+void emit_hlsl_prelude(std::string& out) {
+    out += "#ifndef AREALIGHT_SPACE\n#define AREALIGHT_SPACE 0\n#endif\n";
+    out += "// GLSL's words in HLSL (undefined again at the end of this library).\n";
+    for (const auto& w : kHlslWords) out += fmt::format("#define {} {}\n", w.glsl, w.hlsl);
+    // Two levels, so that a table's alias (a shared table) is expanded before the paste.
+    out += "#define AREALIGHT_HLSL_SAMPLE(t, uv, lod) AREALIGHT_HLSL_SAMPLE_(t, uv, lod)\n";
+    out += "#define AREALIGHT_HLSL_SAMPLE_(t, uv, lod) t##_texture.SampleLevel(t##_sampler, uv, "
+           "lod)\n";
+    out += "#define AREALIGHT_HLSL_REGISTER(k, n, s) AREALIGHT_HLSL_REGISTER_(k, n, s)\n";
+    out += "#define AREALIGHT_HLSL_REGISTER_(k, n, s) register(k##n, space##s)\n";
+}
+
+void emit_hlsl_postlude(std::string& out) {
+    for (const auto& w : kHlslWords) {
+        const std::string name = w.glsl;
+        out += fmt::format("#undef {}\n", name.substr(0, name.find('(')));
+    }
+    for (const char* m : {"AREALIGHT_HLSL_SAMPLE", "AREALIGHT_HLSL_SAMPLE_",
+                          "AREALIGHT_HLSL_REGISTER", "AREALIGHT_HLSL_REGISTER_"})
+        out += fmt::format("#undef {}\n", m);
+}
+
+// HLSL reads a global `const` as a uniform (its initialiser ignored): the templates'
+// global constants, the only declarations they start at column 0 with `const`, become
+// `static const`.
+std::string hlsl_static_constants(const std::string& text) {
+    std::string out;
+    out.reserve(text.size() + 256);
+    std::size_t pos = 0;
+    while (pos < text.size()) {
+        std::size_t end = text.find('\n', pos);
+        end = end == std::string::npos ? text.size() : end + 1;
+        if (text.compare(pos, 6, "const ") == 0) out += "static ";
+        out.append(text, pos, end - pos);
+        pos = end;
+    }
+    return out;
+}
+
 // Separately generated libraries included into one shader must not bind their tables
 // at the same numbers (CONTRACT.md 5). Each library with tables takes the first of
 // kTableSlots slots of kSlotWidth bindings that no library included before it took
@@ -199,13 +276,43 @@ constexpr int kSlotWidth = 8;
 constexpr int kTableSlots = 8;
 
 void emit_table_slots(std::string& out, const std::vector<Variant>& variants,
-                      const std::vector<LibrarySampler>& plan) {
+                      const std::vector<LibrarySampler>& plan, Language lang) {
+    const bool hlsl = lang == Language::Hlsl;
     std::vector<std::pair<std::string, int>> macros;
     for (const auto& s : plan)
         if (s.shares < 0)
-            macros.emplace_back(sampler_binding_macro(variants[s.variant], s.sampler),
+            macros.emplace_back(hlsl ? sampler_register_macro(variants[s.variant], s.sampler)
+                                     : sampler_binding_macro(variants[s.variant], s.sampler),
                                 s.binding_offset);
     if (macros.empty()) return;
+    if (hlsl) {
+        // HLSL's register(tN) takes a literal, which no preprocessor sum can paste: each
+        // table's _REGISTER macro is a literal (the slot's default, or the renderer's).
+        // No apostrophe in an #error: HLSL's preprocessor reads one as a character literal
+        // even in a skipped block.
+        out += fmt::format(
+            "// The tables' default registers (t and s, space AREALIGHT_SPACE): the first slot\n"
+            "// of {0} that no arealight library included before this one took (slot s: {0} s +\n"
+            "// k); a table's own _REGISTER macro (a literal), defined before the include, wins.\n"
+            "#ifdef AREALIGHT_REGISTER\n#error arealight: HLSL registers are literals, which "
+            "AREALIGHT_REGISTER + k cannot give: define the _REGISTER macro of each table "
+            "(tables.json: register_macro) instead\n#endif\n",
+            kSlotWidth);
+        for (int slot = 0; slot < kTableSlots; ++slot) {
+            out += fmt::format(
+                "#{} !defined(AREALIGHT_TABLE_SLOT_{})\n#define AREALIGHT_TABLE_SLOT_{} 1\n",
+                slot == 0 ? "if" : "elif", slot, slot);
+            for (const auto& [macro, k] : macros)
+                out += fmt::format("#ifndef {0}\n#define {0} {1}\n#endif\n", macro,
+                                   kSlotWidth * slot + k);
+        }
+        out += fmt::format(
+            "#else\n#error arealight: more than {} libraries with tables in one shader: define "
+            "the _REGISTER macro of each table (tables.json: register_macro) before including "
+            "this one\n#endif\n",
+            kTableSlots);
+        return;
+    }
     out += fmt::format(
         "// The tables' default bindings: the first slot of {0} that no arealight library\n"
         "// included before this one took (slot s: {0} s + k, after AREALIGHT_BINDING if\n"
@@ -237,8 +344,10 @@ void emit_table_slots(std::string& out, const std::vector<Variant>& variants,
 void emit_samplers(std::string& out, const Variant& v, Language lang,
                    const std::vector<std::pair<std::size_t, LibrarySampler>>& entries) {
     for (const auto& [entry, s] : entries) {
-        if (lang == Language::Glsl && s.shares >= 0) {
+        if (lang != Language::Cpp && s.shares >= 0) {
             out += shared_sampler_marker(entry);
+        } else if (lang == Language::Hlsl) {
+            out += hlsl_table_marker(entry);
         } else if (lang == Language::Glsl) {
             out += fmt::format("layout(set = AREALIGHT_SET, binding = {}) uniform sampler2D {};\n",
                                sampler_binding_macro(v, s.sampler), s.sampler);
@@ -320,6 +429,27 @@ std::string sampler_binding_macro(const Variant& v, const std::string& sampler) 
     return fmt::format("AREALIGHT_{}_{}_BINDING", upper(library_tag(v)), upper(bare));
 }
 
+std::string sampler_register_macro(const Variant& v, const std::string& sampler) {
+    const std::string bare = sampler.rfind("al_", 0) == 0 ? sampler.substr(3) : sampler;
+    return fmt::format("AREALIGHT_{}_{}_REGISTER", upper(library_tag(v)), upper(bare));
+}
+
+const char* to_string(Language lang) {
+    switch (lang) {
+        case Language::Glsl:
+            return "glsl";
+        case Language::Cpp:
+            return "cpp";
+        case Language::Hlsl:
+            return "hlsl";
+    }
+    return "glsl";
+}
+
+bool language_supports(Language lang, const Variant& v) {
+    return lang != Language::Hlsl || effective_precision(v) == Precision::Fp32;
+}
+
 std::vector<std::string> variant_templates(const Variant& v, Language lang) {
     std::vector<std::string> files = {"templates/library/types.glsl"};
     for (auto& f : chunk_templates(v)) files.push_back(std::move(f));
@@ -349,6 +479,7 @@ void emit_library(std::string& out, const std::vector<Variant>& variants, Langua
     out += fmt::format("#ifndef AREALIGHT_LIBRARY_{0}\n#define AREALIGHT_LIBRARY_{0} 1\n",
                        placeholder);
     const std::size_t body_at = out.size();
+    if (lang == Language::Hlsl) emit_hlsl_prelude(out);
     if (lang == Language::Glsl) {
         out += "#extension GL_GOOGLE_cpp_style_line_directive : enable\n";
         out += "#extension GL_EXT_control_flow_attributes : enable\n";
@@ -361,7 +492,7 @@ void emit_library(std::string& out, const std::vector<Variant>& variants, Langua
     }
     emit_template(out, "templates/library/types.glsl", lookup, "");
     const std::vector<LibrarySampler> plan = library_samplers(variants);
-    if (lang == Language::Glsl) emit_table_slots(out, variants, plan);
+    if (lang != Language::Cpp) emit_table_slots(out, variants, plan, lang);
     for (std::size_t vi = 0; vi < variants.size(); ++vi) {
         const Variant& v = variants[vi];
         std::vector<std::pair<std::size_t, LibrarySampler>> entries;
@@ -375,11 +506,20 @@ void emit_library(std::string& out, const std::vector<Variant>& variants, Langua
         emit_samplers(out, v, lang, entries);
         for (const auto& path : chunk_templates(v)) emit_template(out, path, lookup, suffix);
         emit_public_function(out, v, opt);
+        std::string chunk = library_rename(
+            out.substr(start), v,
+            lang == Language::Cpp ? RenameScope::Prefixed : RenameScope::EveryName);
         out.replace(start, std::string::npos,
-                    library_rename(out.substr(start), v,
-                                   lang == Language::Glsl ? RenameScope::EveryName
-                                                          : RenameScope::Prefixed));
+                    lang == Language::Hlsl ? hlsl_static_constants(chunk) : chunk);
         for (const auto& [entry, s] : entries) {
+            if (lang == Language::Hlsl && s.shares < 0) {
+                const std::string marker = hlsl_table_marker(entry);
+                const std::size_t at = out.find(marker, start);
+                if (at != std::string::npos)
+                    out.replace(at, marker.size(),
+                                hlsl_table_declaration(library_rename(s.sampler, v),
+                                                       sampler_register_macro(v, s.sampler)));
+            }
             if (s.shares < 0) continue;
             const LibrarySampler& first = plan[static_cast<std::size_t>(s.shares)];
             const std::string marker = shared_sampler_marker(entry);
@@ -394,6 +534,7 @@ void emit_library(std::string& out, const std::vector<Variant>& variants, Langua
         out += fmt::format("#define AREALIGHT_HAS_{}_{} 1\n", upper(to_string(v.light)),
                            upper(to_string(v.dist)));
     }
+    if (lang == Language::Hlsl) emit_hlsl_postlude(out);
     const std::string hash = fmt::format("{:016X}", fnv1a(std::string_view(out).substr(body_at)));
     for (std::size_t at = out.find(placeholder, guard_at); at < body_at;
          at = out.find(placeholder, at + hash.size()))
@@ -496,6 +637,33 @@ std::string generate_source(const Variant& v, Language lang, const TemplateLooku
     if (lang == Language::Glsl) emit_kernel_prolog(out, v);
     emit_library(out, {v}, lang, LibraryOptions{}, lookup);
     if (lang == Language::Glsl) emit_kernel_entry(out, v, outputs, lookup);
+    return out;
+}
+
+std::string generate_hlsl_kernel(const Variant& v, KernelOutputs outputs) {
+    std::string out;
+    out += fmt::format(
+        "// generated by arealight from templates/*.glsl and templates/library/kernel.hlsl "
+        "for variant {}; do not edit\n"
+        "// The HLSL validation kernel: the variant's HLSL library, called once per case.\n",
+        canonical_name(v));
+    // Cases and results take bindings 0 and 1 (runtime/vulkan_runner.cpp): the tables
+    // from 2, as in the GLSL kernel.
+    out += "#define AREALIGHT_SPACE 0\n";
+    for (const auto& s : library_samplers({v}))
+        if (s.shares < 0)
+            out += fmt::format("#define {} {}\n", sampler_register_macro(v, s.sampler),
+                               2 + s.binding_offset);
+    emit_library(out, {v}, Language::Hlsl, LibraryOptions{}, template_text);
+    const LightEntry* light = find_light(v.light);
+    if (!light) return out;
+    out += fmt::format("#define AL_KERNEL_SHADE {}\n", library_function_name(v));
+    out += fmt::format("#define AL_KERNEL_EVALUATE {}\n",
+                       library_rename(fmt::format("al_{}_evaluate", to_string(v.light)), v,
+                                      RenameScope::EveryName));
+    out += fmt::format("#define AL_KERNEL_ARGS {}\n", light->kernel_args);
+    if (outputs == KernelOutputs::All) out += "#define AL_KERNEL_SECOND 1\n";
+    emit_template(out, "templates/library/kernel.hlsl", template_text, "f");
     return out;
 }
 

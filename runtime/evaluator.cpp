@@ -81,6 +81,20 @@ std::vector<float> pack_cases(const std::vector<const Case*>& cases) {
     return out;
 }
 
+namespace {
+
+// `diag` with every message prefixed (the variant a compiler message is about).
+DiagnosticConsumer prefixed_consumer(std::string prefix, const DiagnosticConsumer& diag) {
+    return [prefix = std::move(prefix), &diag](const Diagnostic& d) {
+        if (!diag) return;
+        Diagnostic p = d;
+        p.message = prefix + d.message;
+        diag(p);
+    };
+}
+
+}  // namespace
+
 std::optional<std::vector<uint32_t>> build_spirv(const Variant& v, bool optimize,
                                                  const DiagnosticConsumer& diag,
                                                  KernelOutputs outputs) {
@@ -96,15 +110,27 @@ std::optional<std::vector<uint32_t>> generated_kernel_spirv(const Variant& v,
 std::optional<std::vector<uint32_t>> build_spirv(const Variant& v, const std::string& glsl,
                                                  bool optimize, const DiagnosticConsumer& diag) {
     const std::string name = canonical_name(v);
-    auto prefixed = [&](const Diagnostic& d) {
-        if (!diag) return;
-        Diagnostic p = d;
-        p.message = "variant " + name + ": " + d.message;
-        diag(p);
-    };
+    const DiagnosticConsumer prefixed = prefixed_consumer("variant " + name + ": ", diag);
     CompileOptions opt;
     opt.optimize = optimize;
-    return compile_glsl(glsl, name + ".comp", opt, prefixed);
+    return compile_shader(glsl, name + ".comp", opt, prefixed);
+}
+
+std::optional<std::vector<uint32_t>> build_hlsl_spirv(const Variant& v, bool optimize,
+                                                      const DiagnosticConsumer& diag,
+                                                      KernelOutputs outputs) {
+    const std::string name = canonical_name(v);
+    const DiagnosticConsumer prefixed = prefixed_consumer("variant " + name + " (HLSL): ", diag);
+    if (!language_supports(Language::Hlsl, v)) {
+        prefixed({Severity::Error, "", 0,
+                  "the HLSL library is fp32 only: this variant computes at " +
+                      std::string(to_string(effective_precision(v)))});
+        return std::nullopt;
+    }
+    CompileOptions opt;
+    opt.optimize = optimize;
+    opt.language = SourceLanguage::Hlsl;
+    return compile_shader(generate_hlsl_kernel(v, outputs), name + ".comp.hlsl", opt, prefixed);
 }
 
 struct Evaluator::Impl {
@@ -167,7 +193,9 @@ bool Evaluator::run_packed(const Variant& v, const std::vector<float>& packed, s
     const auto key = std::make_pair(name, outputs);
     auto it = impl_->spirv.find(key);
     if (it == impl_->spirv.end()) {
-        auto words = build_spirv(v, impl_->opt.optimize, diag, outputs);
+        auto words = impl_->opt.language == Language::Hlsl
+                         ? build_hlsl_spirv(v, impl_->opt.optimize, diag, outputs)
+                         : build_spirv(v, impl_->opt.optimize, diag, outputs);
         if (!words) return false;
         it = impl_->spirv.emplace(key, std::move(*words)).first;
     }

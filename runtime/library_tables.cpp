@@ -54,6 +54,11 @@ bool write_library_tables(const std::vector<Variant>& variants, const std::strin
         row["binding_macro"] = sampler_binding_macro(v, s.sampler);
         row["default_binding"] = fmt::format("AREALIGHT_BINDING + {}", s.binding_offset);
         row["binding_offset"] = s.binding_offset;
+        // The HLSL library's texture and sampler state (register(tN), register(sN) in space
+        // AREALIGHT_SPACE; one combined image sampler at binding N through glslang).
+        row["space_macro"] = "AREALIGHT_SPACE";
+        row["register_macro"] = sampler_register_macro(v, s.sampler);
+        row["default_register"] = s.binding_offset;
         row["file"] = file;
         row["width"] = t.width;
         row["height"] = t.height;

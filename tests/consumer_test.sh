@@ -43,6 +43,10 @@ spv=$work/build/gen/render.comp.spv
 rebuild first
 [ -s "$lib" ] || fail "no generated library $lib"
 [ -s "$spv" ] || fail "no SPIR-V $spv"
+# LANG HLSL: the scene's library in HLSL and the HLSL probe shader compiled against it.
+grep -q 'Texture2D<float4>' "$work/build/gen/hlsl/arealight_scene.hlsl" \
+  || fail "the HLSL library declares no Texture2D table"
+[ -s "$work/build/gen/hlsl/probe.comp.hlsl.spv" ] || fail "no SPIR-V of the HLSL probe shader"
 # The scene asks for no method: its GGX function is the selection's (LTC), whose tables the
 # consumer must upload as the manifest says.
 grep -q 'variant dist=ggx,method=ltc' "$lib" || fail "the GGX function is not LTC: $(grep -m3 variant "$lib")"

@@ -25,7 +25,7 @@ struct Collected {
 
 inline std::vector<uint32_t> compile(const char* source, const char* name) {
     Collected diag;
-    auto spirv = compile_glsl(source, name, CompileOptions{}, diag.consumer());
+    auto spirv = compile_shader(source, name, CompileOptions{}, diag.consumer());
     INFO(diag.text);
     REQUIRE(spirv);
     return *spirv;

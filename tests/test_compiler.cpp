@@ -1,4 +1,4 @@
-// compile_glsl: glslang + SPIRV-Tools in process, diagnostics with file and line.
+// compile_shader: glslang + SPIRV-Tools in process, diagnostics with file and line.
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
@@ -55,9 +55,9 @@ TEST_CASE("a valid compute shader compiles, validates and optimizes", "[compiler
     Collected diag;
     CompileOptions plain;
     plain.optimize = false;
-    const auto unoptimized = compile_glsl(kValidShader, "valid.comp", plain, diag.consumer());
+    const auto unoptimized = compile_shader(kValidShader, "valid.comp", plain, diag.consumer());
     const auto optimized =
-        compile_glsl(kValidShader, "valid.comp", CompileOptions{}, diag.consumer());
+        compile_shader(kValidShader, "valid.comp", CompileOptions{}, diag.consumer());
     INFO(diag.text());
     REQUIRE(unoptimized);
     REQUIRE(optimized);
@@ -82,7 +82,7 @@ TEST_CASE("CompileOptions::entry names the SPIR-V entry point", "[compiler]") {
             options.entry = name;
             options.optimize = optimize;
             Collected diag;
-            const auto spirv = compile_glsl(kValidShader, "valid.comp", options, diag.consumer());
+            const auto spirv = compile_shader(kValidShader, "valid.comp", options, diag.consumer());
             INFO(name << (optimize ? " optimized" : "") << "\n" << diag.text());
             REQUIRE(spirv);
             const std::string text = disassemble(*spirv);
@@ -103,7 +103,7 @@ TEST_CASE("an error after #line is reported at the template file and line", "[co
         "#line 6 \"generated.comp\"\n"
         "void main() { broken(); }\n";
     Collected diag;
-    const auto spirv = compile_glsl(source, "generated.comp", CompileOptions{}, diag.consumer());
+    const auto spirv = compile_shader(source, "generated.comp", CompileOptions{}, diag.consumer());
     INFO(diag.text());
     CHECK_FALSE(spirv);
     REQUIRE(diag.errors() >= 1);
@@ -121,7 +121,7 @@ TEST_CASE("without #line, errors name the source and its line", "[compiler]") {
         "layout(local_size_x = 64) in;\n"
         "void main() { int x = vec2(1.0); }\n";
     Collected diag;
-    CHECK_FALSE(compile_glsl(source, "inline.comp", CompileOptions{}, diag.consumer()));
+    CHECK_FALSE(compile_shader(source, "inline.comp", CompileOptions{}, diag.consumer()));
     INFO(diag.text());
     REQUIRE(diag.errors() >= 1);
     CHECK(diag.all.front().file == "inline.comp");
@@ -134,7 +134,7 @@ TEST_CASE("a link error (no entry point) fails with an error diagnostic", "[comp
         "layout(local_size_x = 64) in;\n"
         "void not_main() {}\n";
     Collected diag;
-    CHECK_FALSE(compile_glsl(source, "nomain.comp", CompileOptions{}, diag.consumer()));
+    CHECK_FALSE(compile_shader(source, "nomain.comp", CompileOptions{}, diag.consumer()));
     INFO(diag.text());
     CHECK(diag.errors() >= 1);
 }
@@ -161,7 +161,7 @@ IncludeRun compile_including(const ScratchFolder& dir, bool includes = true) {
     CompileOptions options;
     options.includes = includes;
     options.include_dirs = {dir / "lib"};
-    run.compiled = compile_glsl(kIncludingShader, run.shader, options, run.diag.consumer(),
+    run.compiled = compile_shader(kIncludingShader, run.shader, options, run.diag.consumer(),
                                 &run.included)
                        .has_value();
     return run;
@@ -243,7 +243,7 @@ TEST_CASE("the stage comes from the extension and reaches the entry point", "[co
     CompileOptions options;
     options.stage = ShaderStage::Fragment;
     Collected diag;
-    const auto spirv = compile_glsl(fragment, "x.frag", options, diag.consumer());
+    const auto spirv = compile_shader(fragment, "x.frag", options, diag.consumer());
     INFO(diag.text());
     REQUIRE(spirv);
     // OpEntryPoint (opcode 15): its first operand is the execution model, Fragment = 4.
@@ -257,8 +257,8 @@ TEST_CASE("the stage comes from the extension and reaches the entry point", "[co
 }
 
 TEST_CASE("an empty consumer drops diagnostics without failing differently", "[compiler]") {
-    CHECK(compile_glsl(kValidShader, "valid.comp", CompileOptions{}, DiagnosticConsumer{}));
-    CHECK_FALSE(compile_glsl("#version 450\nsyntax error here\n", "bad.comp", CompileOptions{},
+    CHECK(compile_shader(kValidShader, "valid.comp", CompileOptions{}, DiagnosticConsumer{}));
+    CHECK_FALSE(compile_shader("#version 450\nsyntax error here\n", "bad.comp", CompileOptions{},
                              DiagnosticConsumer{}));
 }
 
@@ -269,4 +269,76 @@ TEST_CASE("spirv_instruction_count tolerates truncated modules", "[compiler]") {
     CHECK(spirv_instruction_count(
               {0x07230203u, 0x00010300u, 0, 10, 0, (2u << 16) | 17u, 1u, (3u << 16) | 17u}) == 1);
     CHECK(disassemble({1, 2, 3}).empty());
+}
+
+namespace {
+
+const char* const kHlslShader = R"(RWStructuredBuffer<float> values : register(u0);
+float twice(float x) { return x + x; }
+[numthreads(64, 1, 1)]
+void double_them(uint3 id : SV_DispatchThreadID) { values[id.x] = twice(values[id.x]); }
+)";
+
+// The SPIR-V version word of a module: 0x00MMmm00.
+std::pair<int, int> spirv_version(const std::vector<uint32_t>& spirv) {
+    return {static_cast<int>((spirv[1] >> 16) & 0xffu), static_cast<int>((spirv[1] >> 8) & 0xffu)};
+}
+
+}  // namespace
+
+TEST_CASE("HLSL compiles from its entry function, legalised, with or without the optimizer",
+          "[compiler][hlsl]") {
+    CHECK(language_from_path("dir.hlsl/x.comp") == SourceLanguage::Glsl);
+    CHECK(language_from_path("x.comp.hlsl") == SourceLanguage::Hlsl);
+    for (const bool optimize : {false, true}) {
+        CompileOptions options;
+        options.language = SourceLanguage::Hlsl;
+        options.source_entry = "double_them";
+        options.optimize = optimize;
+        Collected diag;
+        const auto spirv = compile_shader(kHlslShader, "x.comp.hlsl", options, diag.consumer());
+        INFO(diag.text());
+        REQUIRE(spirv);
+        const std::string text = disassemble(*spirv);
+        INFO(text);
+        CHECK(text.find("OpEntryPoint GLCompute %main \"main\"") != std::string::npos);
+        CHECK(text.find("OpFAdd") != std::string::npos);  // double_them's body, not an empty main
+        CHECK(text.find("OpSource HLSL") != std::string::npos);
+    }
+    // An entry function the file lacks is an error (glslang only warns).
+    CompileOptions missing;
+    missing.language = SourceLanguage::Hlsl;
+    missing.source_entry = "absent";
+    Collected diag;
+    CHECK_FALSE(compile_shader(kHlslShader, "x.comp.hlsl", missing, diag.consumer()));
+    INFO(diag.text());
+    CHECK(diag.text().find("no entry function absent") != std::string::npos);
+}
+
+TEST_CASE("target environments: each Vulkan version's SPIR-V, validated for it", "[compiler]") {
+    CHECK(target_env_from_string("vulkan1.2") == TargetEnv::Vulkan1_2);
+    CHECK_FALSE(target_env_from_string("vulkan1.4"));
+    CHECK(std::string(to_string(TargetEnv::Vulkan1_3)) == "vulkan1.3");
+    const std::pair<TargetEnv, std::pair<int, int>> glsl_versions[] = {
+        {TargetEnv::Vulkan1_0, {1, 0}}, {TargetEnv::Vulkan1_1, {1, 3}},
+        {TargetEnv::Vulkan1_2, {1, 5}}, {TargetEnv::Vulkan1_3, {1, 6}}};
+    for (const auto& [env, version] : glsl_versions) {
+        for (const SourceLanguage lang : {SourceLanguage::Glsl, SourceLanguage::Hlsl}) {
+            CompileOptions options;
+            options.target_env = env;
+            options.language = lang;
+            options.source_entry = "double_them";
+            const bool hlsl = lang == SourceLanguage::Hlsl;
+            Collected diag;
+            const auto spirv = compile_shader(hlsl ? kHlslShader : kValidShader,
+                                              hlsl ? "x.comp.hlsl" : "x.comp", options,
+                                              diag.consumer());
+            INFO(to_string(env) << (hlsl ? " hlsl\n" : " glsl\n") << diag.text());
+            REQUIRE(spirv);
+            // HLSL above Vulkan 1.1 stays SPIR-V 1.3 (glslang 12's BufferBlock).
+            const std::pair<int, int> want =
+                hlsl && env > TargetEnv::Vulkan1_1 ? std::pair<int, int>{1, 3} : version;
+            CHECK(spirv_version(*spirv) == want);
+        }
+    }
 }

@@ -1,6 +1,6 @@
 // The shading library from a renderer's side (CONTRACT.md 5): tests/data/contract_user.comp,
 // written against the contract alone with its own buffer layout, includes a library of four
-// polygon variants (one with tables), compiled by compile_glsl with an include folder and run
+// polygon variants (one with tables), compiled by compile_shader with an include folder and run
 // on VulkanRunner; per shading point it must give what Evaluator::run (the validation kernel)
 // gives for each variant. The same shader over two libraries included together, after
 // declarations of the names arealight uses internally (real, rvec3, AlCase), gives the same.
@@ -25,6 +25,7 @@
 #include "arealight/library_tables.hpp"
 #include "arealight/vulkan_runner.hpp"
 #include "eval_support.hpp"
+#include "fp32_families.hpp"
 #include "microfacet_cases.hpp"
 #include "scratch_folder.hpp"
 
@@ -154,7 +155,7 @@ std::optional<std::vector<uint32_t>> compile_user(const ScratchFolder& dir, cons
     options.includes = true;
     options.optimize = optimize;
     options.include_dirs = {dir / ""};
-    return compile_glsl(text, name, options, [&](const Diagnostic& d) {
+    return compile_shader(text, name, options, [&](const Diagnostic& d) {
         why += d.file + ":" + std::to_string(d.line) + ": " + d.message + "\n";
     });
 }
@@ -323,21 +324,7 @@ TEST_CASE("a library holds one variant per light type and distribution", "[libra
 // (its default keys, at fp32 where the default is fp64) must compile there as a user's
 // `#version 310 es` compute shader that includes its library, tables and all.
 TEST_CASE("every fp32 family's library compiles as GLSL ES 3.10", "[library][es]") {
-    std::vector<Variant> families;
-    for (const Variant& v : enumerate_variants()) {
-        bool seen = false;
-        for (const Variant& f : families)
-            seen = seen || (f.dist == v.dist && f.method == v.method && f.light == v.light);
-        if (seen) continue;
-        std::string name = std::string("dist=") + to_string(v.dist) + ",method=" +
-                           to_string(v.method) + ",light=" + to_string(v.light);
-        Variant d = variant(name);
-        if (effective_precision(d) == Precision::Fp64) {
-            d.precision = Precision::Fp32;
-            if (!is_valid(d)) continue;
-        }
-        families.push_back(d);
-    }
+    const std::vector<Variant> families = fp32_families();
     REQUIRE(families.size() >= 40);
     ScratchFolder dir("library_es");
     for (const Variant& v : families) {

@@ -57,6 +57,7 @@
     }
 
 #define AL_INOUT(T) T&
+#define AL_FREXP_EXPONENT int
 
 #define real double
 #define rvec2 dvec2

@@ -146,7 +146,7 @@ std::vector<uint32_t> spirv(const std::string& glsl, const std::string& name, bo
     Collected c;
     CompileOptions opt;
     opt.optimize = optimize;
-    auto words = compile_glsl(glsl, name, opt, c.consumer());
+    auto words = compile_shader(glsl, name, opt, c.consumer());
     INFO(c.all());
     REQUIRE(words);
     return *words;

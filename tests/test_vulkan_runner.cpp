@@ -40,7 +40,7 @@ using test::compile;
 
 std::vector<uint32_t> compiled_shader() {
     Collected diag;
-    auto spirv = compile_glsl(kTwiceAndSqrt, "twice_sqrt.comp", CompileOptions{}, diag.consumer());
+    auto spirv = compile_shader(kTwiceAndSqrt, "twice_sqrt.comp", CompileOptions{}, diag.consumer());
     INFO(diag.text);
     REQUIRE(spirv);
     return *spirv;

@@ -1,5 +1,6 @@
-// GLSL shader (any graphics or compute stage) -> validated (and optionally optimized) SPIR-V,
-// in process, with `#include` resolved from the file system when asked.
+// GLSL or HLSL shader (any graphics or compute stage) -> validated (and optionally optimized)
+// SPIR-V for a Vulkan version, in process, with `#include` resolved from the file system when
+// asked.
 #pragma once
 
 #include <cstddef>
@@ -13,17 +14,30 @@
 namespace arealight {
 
 enum class ShaderStage { Vertex, TessControl, TessEvaluation, Geometry, Fragment, Compute };
+enum class SourceLanguage { Glsl, Hlsl };
+// The Vulkan version the SPIR-V is for, and with it the SPIR-V version (1.0, 1.3, 1.5, 1.6).
+enum class TargetEnv { Vulkan1_0, Vulkan1_1, Vulkan1_2, Vulkan1_3 };
 
 // The stage glslc infers from a file name's last extension: .vert .tesc .tese .geom .frag
 // .comp; nullopt for any other.
 std::optional<ShaderStage> stage_from_path(const std::string& path);
 // The extension without its dot ("comp"), as stage_from_path reads it.
 const char* to_string(ShaderStage stage);
+// .hlsl -> Hlsl; any other name -> Glsl.
+SourceLanguage language_from_path(const std::string& path);
+// "vulkan1.0" .. "vulkan1.3"; nullopt for any other.
+std::optional<TargetEnv> target_env_from_string(const std::string& name);
+const char* to_string(TargetEnv env);
 
 struct CompileOptions {
     bool optimize = true;        // spvtools::Optimizer::RegisterPerformancePasses
     std::string entry = "main";  // SPIR-V entry point name; the GLSL function stays main()
     ShaderStage stage = ShaderStage::Compute;
+    SourceLanguage language = SourceLanguage::Glsl;
+    // HLSL: the function the stage starts at (glslc's -fentry-point, dxc's -E); empty: `entry`.
+    // GLSL's is always main().
+    std::string source_entry;
+    TargetEnv target_env = TargetEnv::Vulkan1_1;
     // `#include "name"` and `#include <name>` (GL_GOOGLE_include_directive, enabled without an
     // #extension line, which also enables `#line N "file"`). Off for the generated kernels,
     // which include nothing (enabling it adds an OpSourceExtension). "name" is searched in the
@@ -34,13 +48,14 @@ struct CompileOptions {
     std::vector<std::string> include_dirs;
 };
 
-// Compiles one shader for Vulkan 1.1 / SPIR-V 1.3 and validates the result (again after
-// optimizing). `source_name` names the text in diagnostics until a `#line N "file"` directive
+// Compiles one shader for options.target_env (Vulkan 1.1 / SPIR-V 1.3 by default) and validates
+// the result (again after optimizing; HLSL after SPIRV-Tools' legalization passes, which
+// glslang's HLSL output needs). `source_name` names the text in diagnostics until a `#line N "file"` directive
 // (GL_GOOGLE_cpp_style_line_directive) renames it. Every compiler and validator message goes to
 // `diag`; on any error returns nullopt. When `included_files` is given it receives the path of
 // every file an #include read, once each, in first-read order (a build's dependencies), also
 // on failure. Safe to call from several threads at once.
-std::optional<std::vector<uint32_t>> compile_glsl(const std::string& source,
+std::optional<std::vector<uint32_t>> compile_shader(const std::string& source,
                                                   const std::string& source_name,
                                                   const CompileOptions& options,
                                                   const DiagnosticConsumer& diag,

@@ -37,6 +37,9 @@ struct EvalOptions {
     Backend backend = Backend::Vulkan;
     std::string device;    // Vulkan device name substring; empty = first
     bool optimize = true;  // SPIRV-Tools performance passes
+    // Vulkan: the kernel around the GLSL library, or the HLSL kernel around the HLSL
+    // library (generate_hlsl_kernel; fp32 variants, language_supports).
+    Language language = Language::Glsl;
 };
 
 struct EvalStats {
@@ -95,6 +98,11 @@ std::optional<std::vector<uint32_t>> build_spirv(const Variant& v, bool optimize
 std::optional<std::vector<uint32_t>> generated_kernel_spirv(const Variant& v,
                                                             const DiagnosticConsumer& diag,
                                                             bool optimize = true);
+// The HLSL validation kernel's SPIR-V (generate_hlsl_kernel through glslang's HLSL front
+// end): what the GLSL kernel computes, from the HLSL library.
+std::optional<std::vector<uint32_t>> build_hlsl_spirv(const Variant& v, bool optimize,
+                                                      const DiagnosticConsumer& diag,
+                                                      KernelOutputs outputs = KernelOutputs::Shading);
 // Same, for GLSL text already stitched for `v` (tests inject broken templates).
 std::optional<std::vector<uint32_t>> build_spirv(const Variant& v, const std::string& glsl,
                                                  bool optimize, const DiagnosticConsumer& diag);

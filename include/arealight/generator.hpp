@@ -16,7 +16,13 @@ namespace arealight {
 enum class Language {
     Glsl,  // GLSL 4.50 compute shader for glslang (Vulkan)
     Cpp,   // the same math as C++ over GLM, for the CPU mirror
+    Hlsl,  // the same text as HLSL (Shader Model 6 syntax, glslang's HLSL front end)
 };
+// "glsl", "cpp", "hlsl".
+const char* to_string(Language lang);
+// Whether the library can be written in `lang` for the variant: HLSL only at fp32
+// (the HLSL layer maps GLSL's fp32 words; fp64 and fp16 variants are GLSL only).
+bool language_supports(Language lang, const Variant& v);
 
 // Template files of a variant's kernel, in stitch order: the library's types,
 // shared math, the family's templates (distribution, method, light), the light's
@@ -62,6 +68,9 @@ std::string library_function_name(const Variant& v);
 // The macro that sets a sampler's binding ("AREALIGHT_POLYGON_GGX_LTC_MATRIX_BINDING"),
 // for a sampler name as the family row spells it.
 std::string sampler_binding_macro(const Variant& v, const std::string& sampler);
+// The HLSL library's macro for the same table's register number, a literal
+// ("AREALIGHT_POLYGON_GGX_LTC_MATRIX_REGISTER": register(tN) and register(sN)).
+std::string sampler_register_macro(const Variant& v, const std::string& sampler);
 // Which names library_rename moves: Prefixed, arealight's own (al_x, AL_X, AlX) and
 // the precision words, enough to keep variants apart (the C++ mirror); EveryName also
 // every other name but GLSL's own words, the contract's (CONTRACT.md 5) and
@@ -99,6 +108,10 @@ std::string generate_source(const Variant& v, Language lang,
 // function (a scene's pruned library, to compare it with the hand-named variant).
 std::string generate_kernel(const Variant& v, const std::string& library_text,
                             KernelOutputs outputs = KernelOutputs::Shading);
+// The validation kernel in HLSL (templates/library/kernel.hlsl around v's HLSL library):
+// the same bindings, case layout and single library call as the GLSL kernel, entry
+// function main. v must be language_supports(Hlsl, v).
+std::string generate_hlsl_kernel(const Variant& v, KernelOutputs outputs = KernelOutputs::Shading);
 
 // Where template text comes from: the embedded copies by default; tests inject
 // modified text (a deliberately broken template) through this.

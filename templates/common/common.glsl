@@ -104,7 +104,7 @@ real al_atan2(real y, real x) {
 // log m = al_log_ratio_series((m - 1) / (m + 1)). Error a few ulp (lavapipe's fp32
 // log: 7e-6 relative; GLSL has no fp64 log).
 real al_log(real x) {
-    int e;
+    AL_FREXP_EXPONENT e;  // frexp's exponent: int in GLSL and C++, float in HLSL
     real m = frexp(x, e);
     if (m < AL_R(0.70710678118654752440)) {
         m *= AL_R(2.0);

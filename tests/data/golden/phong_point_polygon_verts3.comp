@@ -8,8 +8,8 @@
 // The shading library of CONTRACT.md 5: include it in any stage. Names outside
 // the contract's are prefixed al_<light>_<dist>_ (AL_..., Al...) so that they
 // cannot collide with a renderer's or another arealight library's.
-#ifndef AREALIGHT_LIBRARY_9D6A3D65807F8DB0
-#define AREALIGHT_LIBRARY_9D6A3D65807F8DB0 1
+#ifndef AREALIGHT_LIBRARY_9473703EE3B5DD1A
+#define AREALIGHT_LIBRARY_9473703EE3B5DD1A 1
 #extension GL_GOOGLE_cpp_style_line_directive : enable
 #extension GL_EXT_control_flow_attributes : enable
 #line 1 "templates/library/types.glsl"
@@ -47,6 +47,7 @@ struct ArealightShading {
 #define AL_POLYGON_PHONG_UNROLL [[unroll]]
 #define AL_POLYGON_PHONG_ARRAY_BEGIN(al_polygon_phong_T, al_polygon_phong_N) al_polygon_phong_T[al_polygon_phong_N](
 #define AL_POLYGON_PHONG_ARRAY_END )
+#define AL_POLYGON_PHONG_FREXP_EXPONENT int
 #define al_polygon_phong_hreal float
 #define al_polygon_phong_hvec2 vec2
 #define al_polygon_phong_hvec3 vec3
@@ -168,7 +169,7 @@ al_polygon_phong_real al_polygon_phong_atan2(al_polygon_phong_real al_polygon_ph
 // log m = al_log_ratio_series((m - 1) / (m + 1)). Error a few ulp (lavapipe's fp32
 // log: 7e-6 relative; GLSL has no fp64 log).
 al_polygon_phong_real al_polygon_phong_log(al_polygon_phong_real al_polygon_phong_x) {
-    int al_polygon_phong_e;
+    AL_POLYGON_PHONG_FREXP_EXPONENT al_polygon_phong_e;  // frexp's exponent: int in GLSL and C++, float in HLSL
     al_polygon_phong_real al_polygon_phong_m = frexp(al_polygon_phong_x, al_polygon_phong_e);
     if (al_polygon_phong_m < 0.70710678118654752440f) {
         al_polygon_phong_m *= 2.0f;
@@ -296,7 +297,7 @@ void al_polygon_phong_tangent_frame(al_polygon_phong_rvec3 al_polygon_phong_z, A
 // precision: a value beyond the fp32 range is thus caught here too.
 float al_polygon_phong_clean(float al_polygon_phong_x) { return (al_polygon_phong_x >= 0.0f && al_polygon_phong_x <= 3.0e38f) ? al_polygon_phong_x : 0.0f; }
 vec4 al_polygon_phong_clean(vec4 al_polygon_phong_x) { return vec4(al_polygon_phong_clean(al_polygon_phong_x.x), al_polygon_phong_clean(al_polygon_phong_x.y), al_polygon_phong_clean(al_polygon_phong_x.z), al_polygon_phong_clean(al_polygon_phong_x.w)); }
-#line 300 "arealight-generated"
+#line 301 "arealight-generated"
 #line 1 "templates/dist/phong.glsl"
 // Energy-conserving Phong, CONTRACT.md 2: f = (N+2)/(2 pi) (r.w)_+^N.
 
@@ -313,7 +314,7 @@ al_polygon_phong_real al_polygon_phong_phong_power(al_polygon_phong_rvec3 al_pol
 al_polygon_phong_real al_polygon_phong_phong_brdf(al_polygon_phong_rvec3 al_polygon_phong_r, al_polygon_phong_rvec3 al_polygon_phong_w, al_polygon_phong_real al_polygon_phong_N) {
     return (al_polygon_phong_N + 2.0f) / AL_POLYGON_PHONG_TWO_PI * al_polygon_phong_phong_power(al_polygon_phong_r, al_polygon_phong_w, al_polygon_phong_N);
 }
-#line 317 "arealight-generated"
+#line 318 "arealight-generated"
 #line 1 "templates/light/point_light.glsl"
 // A point light of solid angle omega in direction w (unit): the point-light baseline
 // every speed ratio divides by (light/polygon_methods.glsl: the polygon's centre;
@@ -331,7 +332,7 @@ vec4 al_polygon_phong_point_light(AlPolygonPhongCase al_polygon_phong_c, al_poly
 #endif
     return vec4(al_polygon_phong_nw / AL_POLYGON_PHONG_PI * al_polygon_phong_solid_angle, al_polygon_phong_spec, 0.0f, 0.0f);
 }
-#line 335 "arealight-generated"
+#line 336 "arealight-generated"
 #line 1 "templates/light/polygon.glsl"
 // Polygon lights (CONTRACT.md 1) as spherical polygons: orientation, sidedness,
 // exact clipping to the hemispheres of n and of the lobe axis, and the exact diffuse
@@ -502,7 +503,7 @@ al_polygon_phong_rvec2 al_polygon_phong_polygon_moments(AlPolygonPhongCase al_po
 #endif
 #endif
 #endif
-#line 506 "arealight-generated"
+#line 507 "arealight-generated"
 #line 1 "templates/light/polygon_methods.glsl"
 // Shading of polygon lights (CONTRACT.md 2) by each method: the point-light
 // baseline, or clipping (light/polygon.glsl) and the method's boundary moments.
@@ -620,7 +621,7 @@ vec4 al_polygon_phong_shade(AlPolygonPhongCase al_polygon_phong_c) {
     return vec4(diffuse, specular, al_polygon_phong_sm.y, 0.0f);
 }
 #endif
-#line 624 "arealight-generated"
+#line 625 "arealight-generated"
 #line 1 "templates/library/polygon.glsl"
 // The library entry for polygon lights (CONTRACT.md 5): the renderer's fp32 values,
 // in any consistent space, turned into the record the methods work on, in the
@@ -672,7 +673,7 @@ AlPolygonPhongCase al_polygon_phong_polygon_record(ArealightSurface al_polygon_p
 vec4 al_polygon_phong_polygon_evaluate(ArealightSurface al_polygon_phong_s, vec3 al_polygon_phong_vertices[8], int al_polygon_phong_count, bool al_polygon_phong_two_sided) {
     return al_polygon_phong_clean(al_polygon_phong_shade(al_polygon_phong_polygon_record(al_polygon_phong_s, al_polygon_phong_vertices, al_polygon_phong_count, al_polygon_phong_two_sided)));
 }
-#line 676 "arealight-generated"
+#line 677 "arealight-generated"
 // arealight_polygon_phong: variant dist=phong,method=point,light=polygon,verts=3.
 // Domain: p, n, v, the light in one space, fp32 (n, v any length); convex planar polygon, counter-clockwise seen from its emitting side, count in [3, AL_MAX_VERTS] (more are cut to the first AL_MAX_VERTS); s.param the exponent N in [1, 1e5]; s.f0 in [0, 1] (ignored).
 // Returns diffuse and specular of CONTRACT.md 2 for unit radiance: finite, >= 0.
@@ -685,7 +686,7 @@ ArealightShading arealight_polygon_phong(ArealightSurface al_polygon_phong_s, ve
     return al_polygon_phong_result;
 }
 #define AREALIGHT_HAS_POLYGON_PHONG 1
-#endif  // AREALIGHT_LIBRARY_9D6A3D65807F8DB0
+#endif  // AREALIGHT_LIBRARY_9473703EE3B5DD1A
 #define AL_KERNEL_SHADE arealight_polygon_phong
 #define AL_KERNEL_EVALUATE al_polygon_phong_polygon_evaluate
 #define AL_KERNEL_ARGS vertices, count, two_sided
@@ -742,4 +743,4 @@ void main() {
 #endif
     al_results[i] = result;
 }
-#line 746 "arealight-generated"
+#line 747 "arealight-generated"
