@@ -45,11 +45,22 @@ std::string cache_path(const GpuCostOptions& opt, const std::string& family,
                        fnv1a(words));
 }
 
-std::optional<RadvStatistics> read_cached(const std::string& path) {
+// A cache entry: the module's statistics, or that its compile did not finish within
+// `stopped_after` seconds (ACO on some unrolled modules runs for minutes into many GB), so
+// that a run with no larger limit does not spend that time again.
+struct CachedCompile {
+    std::optional<RadvStatistics> stats;
+    double stopped_after = 0.0;  // > 0: stopped at this limit
+};
+
+std::optional<CachedCompile> read_cached(const std::string& path) {
     // A missing or unreadable entry is a miss, never an error.
     auto text = read_file(path, nullptr);
     if (!text) return std::nullopt;
     const auto doc = nlohmann::json::parse(*text, nullptr, false);
+    if (doc.is_object() && doc.contains("stopped_after_seconds") &&
+        doc["stopped_after_seconds"].is_number() && doc["stopped_after_seconds"].get<double>() > 0)
+        return CachedCompile{std::nullopt, doc["stopped_after_seconds"].get<double>()};
     if (!doc.is_object() || !doc.contains("subgroup_size") || !doc.contains("values") ||
         !doc["subgroup_size"].is_number_unsigned() || !doc["values"].is_object())
         return std::nullopt;
@@ -59,7 +70,7 @@ std::optional<RadvStatistics> read_cached(const std::string& path) {
         if (!it->is_number()) return std::nullopt;
         s.values[it.key()] = it->get<double>();
     }
-    return s;
+    return CachedCompile{s, 0.0};
 }
 
 void write_cached(const std::string& path, const RadvStatistics& s) {
@@ -68,6 +79,12 @@ void write_cached(const std::string& path, const RadvStatistics& s) {
     doc["values"] = nlohmann::json::object();
     for (const auto& [name, value] : s.values) doc["values"][name] = value;
     // A cache that cannot be written only costs the next run a compile.
+    write_file_atomic(path, doc.dump() + "\n", nullptr);
+}
+
+void write_stopped(const std::string& path, double seconds) {
+    nlohmann::json doc;
+    doc["stopped_after_seconds"] = seconds;
     write_file_atomic(path, doc.dump() + "\n", nullptr);
 }
 
@@ -111,13 +128,26 @@ struct GpuCostMeter::Impl {
             const std::string path =
                 opt.cache_dir.empty() ? "" : cache_path(opt, device->family(), mesa, spirv);
             std::optional<RadvStatistics> stats;
-            if (!path.empty()) stats = read_cached(path);
-            if (!stats) {
+            // An entry that says the compile was stopped at a limit no smaller than this
+            // run's stands for the same outcome; a larger limit tries again.
+            const std::optional<CachedCompile> cached =
+                path.empty() ? std::nullopt : read_cached(path);
+            const bool known_stopped =
+                cached && !cached->stats && cached->stopped_after >= opt.compile_seconds;
+            if (cached && cached->stats) stats = cached->stats;
+            if (!stats && !known_stopped) {
                 stats = device->compile(spirv, diag, opt.compile_seconds,
                                         opt.compile_memory_bytes, &stopped);
                 if (!stats && !stopped) return nullptr;
-                // A stopped compile depends on the machine's load: not remembered on disk.
-                if (stats && !path.empty()) write_cached(path, *stats);
+                if (!path.empty()) {
+                    if (stats) write_cached(path, *stats);
+                    else write_stopped(path, opt.compile_seconds);
+                }
+            } else if (known_stopped && diag) {
+                diag({Severity::Warning, "", 0,
+                      fmt::format("gpu cost: the module's compile did not finish within {} s "
+                                  "before ({}): not tried again",
+                                  cached->stopped_after, path)});
             }
             it = compiled.emplace(spirv, std::move(stats)).first;
         }

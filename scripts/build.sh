@@ -2,9 +2,11 @@
 # Configures and builds arealight into build/ (Release): every target, or only the ones
 # named (scripts/main.sh builds the arealight executable alone, not the tests).
 #   bash scripts/build.sh [TARGET...]
+#   MIRROR_FLAGS=-O0 bash scripts/build.sh arealight   # the CPU mirror unoptimised (main.sh)
+# MIRROR_FLAGS is passed at every configure, so a build without it is the default again.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DAREALIGHT_MIRROR_FLAGS="${MIRROR_FLAGS:-}" >/dev/null
 targets=()
 for t in "$@"; do targets+=(--target "$t"); done
 cmake --build build -j"$(nproc)" "${targets[@]}"

@@ -162,6 +162,51 @@ TEST_CASE("gpu cost: the cache folder keeps each module's statistics for the nex
     CHECK(nlohmann::json::parse(reread, nullptr, false).is_object());
 }
 
+TEST_CASE("gpu cost: a compile stopped at its limit is remembered, and retried at a larger one",
+          "[gpu_cost]") {
+    if (!meter_or_skip()) return;
+    test::ScratchFolder scratch("gpu_cache_stopped");
+    GpuCostOptions opt;
+    opt.cache_dir = scratch / "cache";
+    opt.compile_seconds = 1e-4;  // no compile finishes this fast: each is stopped
+    const auto words = compiled(kTrivial, "trivial.comp");
+    auto entries = [&] {
+        std::vector<nlohmann::json> docs;
+        for (const auto& e : std::filesystem::directory_iterator(opt.cache_dir)) {
+            std::ifstream in(e.path());
+            docs.push_back(nlohmann::json::parse(in, nullptr, false));
+        }
+        return docs;
+    };
+    Collected first_diag;
+    auto first = GpuCostMeter::create(opt, first_diag.consumer());
+    REQUIRE(first);
+    CHECK_FALSE(first->measure(words, first_diag.consumer()));
+    auto docs = entries();
+    INFO(first_diag.text);
+    REQUIRE(docs.size() == 1);
+    CHECK(docs[0].value("stopped_after_seconds", 0.0) == opt.compile_seconds);
+    // The same limit: not compiled again, and said so.
+    Collected second_diag;
+    auto second = GpuCostMeter::create(opt, second_diag.consumer());
+    REQUIRE(second);
+    CHECK_FALSE(second->measure(words, second_diag.consumer()));
+    INFO(second_diag.text);
+    CHECK(second_diag.text.find("not tried again") != std::string::npos);
+    // A larger limit compiles it, and the entry becomes its statistics.
+    opt.compile_seconds = 60;
+    Collected third_diag;
+    auto third = GpuCostMeter::create(opt, third_diag.consumer());
+    REQUIRE(third);
+    const auto measured = third->measure(words, third_diag.consumer());
+    INFO(third_diag.text);
+    REQUIRE(measured);
+    CHECK(measured->cost > 0);
+    docs = entries();
+    REQUIRE(docs.size() == 1);
+    CHECK(docs[0].contains("values"));
+}
+
 TEST_CASE("gpu cost: a variant is measured on generate's kernel, against its point light",
           "[gpu_cost]") {
     auto meter = meter_or_skip();
