@@ -114,9 +114,11 @@ std::string svg_plot(const Plot& p) {
     // The legend sits right of the plot and must fit the canvas: its column is as wide as
     // the longest entry (about 7 px a character at 12 px), the canvas as tall as its
     // entries; the plot area keeps the size p asks for.
-    std::size_t longest = 0, entries = p.series.size() + (p.front.empty() ? 0 : 1);
+    std::size_t longest = 0, entries = p.series.size() + (p.front.empty() ? 0 : 1) +
+                                       (p.highlight.empty() ? 0 : 1);
     for (const auto& s : p.series) longest = std::max(longest, s.name.size());
     if (!p.front.empty()) longest = std::max(longest, p.front_name.size());
+    if (!p.highlight.empty()) longest = std::max(longest, p.highlight_name.size());
     const double left = 70, top = 40, bottom = 50;
     const double right = std::max(190.0, 40.0 + 7.0 * double(longest));
     const double pw = p.width - left - 190.0, ph = p.height - top - bottom;
@@ -187,6 +189,14 @@ std::string svg_plot(const Plot& p) {
     }
     if (!p.front.empty())
         polyline(p.front, "black", "stroke-width=\"1.2\" stroke-dasharray=\"5,3\"");
+    auto ring = [&](double x, double y) {
+        return fmt::format(
+            "<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"8\" fill=\"none\" stroke=\"black\" "
+            "stroke-width=\"1.6\"/>\n",
+            x, y);
+    };
+    for (const auto& q : p.highlight)
+        if (plottable(q)) o += ring(X(q.x), Y(q.y));
 
     // Legend, right of the plot.
     double ly = top + 8;
@@ -207,6 +217,12 @@ std::string svg_plot(const Plot& p) {
     };
     for (const auto& s : p.series) legend(s.name, s.color, shape_of(s));
     if (!p.front.empty()) legend(p.front_name, "black", -1);
+    if (!p.highlight.empty()) {
+        o += ring(left + pw + 22, ly);
+        o += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n", left + pw + 36, ly + 4,
+                         escape(p.highlight_name));
+        ly += 18;
+    }
     o += "</svg>\n";
     return o;
 }

@@ -13,6 +13,7 @@
 #include "arealight/gpu_cost_json.hpp"
 #include "arealight/machine_code.hpp"
 #include "arealight/reference.hpp"
+#include "arealight/scene_select.hpp"
 #include "arealight/svg_plot.hpp"
 
 namespace arealight {
@@ -162,6 +163,36 @@ void mark_pareto(std::vector<ReportRow>& rows) {
                 break;
             }
         }
+    }
+}
+
+void mark_recommended(std::vector<ReportRow>& rows) {
+    const bool gpu = std::all_of(rows.begin(), rows.end(), has_gpu_ratio);
+    auto cost = [gpu](const ReportRow& r) { return gpu ? r.gpu->ratio_to_point : r.ratio; };
+    const Variant shape;
+    auto allowed = [&](const ReportRow& r) {
+        return r.variant.sided == shape.sided && r.variant.verts == shape.verts &&
+               effective_precision(r.variant) != Precision::Fp64 && std::isfinite(r.error()) &&
+               std::isfinite(cost(r));
+    };
+    for (auto& r : rows) r.recommended = false;
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        ReportRow* best = nullptr;
+        bool best_meets = false;
+        for (auto& r : rows) {
+            if (!allowed(r) || r.value != rows[i].value || r.variant.dist != rows[i].variant.dist ||
+                r.variant.light != rows[i].variant.light)
+                continue;
+            const bool meets = r.error() <= kDefaultMaxError;
+            const bool better = !best || (meets && !best_meets) ||
+                                (meets == best_meets &&
+                                 (meets ? cost(r) < cost(*best) : r.error() < best->error()));
+            if (better) {
+                best = &r;
+                best_meets = meets;
+            }
+        }
+        if (best) best->recommended = true;
     }
 }
 
@@ -434,6 +465,7 @@ std::optional<Report> run_report(Evaluator& ev, const CaseSet& cases, const Repo
         }
     }
     mark_pareto(report.rows);
+    mark_recommended(report.rows);
     report.seconds = elapsed_since(t_start);
     return report;
 }
@@ -467,6 +499,7 @@ std::string report_json(const Report& r) {
         o["ns_per_case"] = row.ns_per_case;
         o["ratio_to_point"] = row.ratio;
         o["pareto"] = row.pareto;
+        o["recommended"] = row.recommended;
         // The error of the plots and the front: the larger relL2 of these two.
         o["error_quantities"] = {"specular", second_quantity(row.variant)};
         o["error_rel_l2"] = num(row.error());
@@ -549,7 +582,8 @@ std::string table(const std::vector<const ReportRow*>& rows, const Report& r) {
                 row->name, row->cases, gpu_cells(*row), row->spirv_instructions,
                 row->x86_instructions, bytes_text(row->table_bytes), row->texture_fetches,
                 row->ns_per_case, row->ratio, d ? g3(d->rel_l2) : "–", score_cell(*row, "specular"),
-                score_cell(*row, q), row->pareto ? "●" : "");
+                score_cell(*row, q),
+                std::string(row->pareto ? "●" : "") + (row->recommended ? " ★" : ""));
         }
     }
     return t;
@@ -624,7 +658,10 @@ std::string report_markdown(const Report& r) {
         "reference` (median, p95, max) and relative L2, the metric of `shared/tools/score`; "
         "the second quantity is moment for phong and ndf for the microfacet distributions. "
         "front: on the error–cost Pareto front of its distribution and shape (error = the "
-        "larger relL2 of specular and moment or ndf; cost = {}).\n\n",
+        "larger relL2 of specular and moment or ndf; cost = {}); ★: recommended, what "
+        "`generate --scene` would pick by these rows at the default quality (per distribution "
+        "and light, default shape, not fp64: the cheapest with error <= 2e-2, else the most "
+        "accurate), ringed in report.svg.\n\n",
         sweep ? "sweep" : "report", sweep ? "sweep" : "report", r.pattern, files, r.device,
         r.rows.size(), r.seconds, over,
         r.gpu_device.empty()
@@ -699,6 +736,10 @@ std::vector<std::pair<std::string, std::string>> report_pictures(const Report& r
                         s.points.push_back({cost(*row), row->error(), row->name});
                 if (!s.points.empty()) p.series.push_back(s);
             }
+            for (const ReportRow* row : rows)
+                if (row->recommended) p.highlight.push_back({cost(*row), row->error(), row->name});
+            if (!p.highlight.empty())
+                p.highlight_name = "recommended (error <= 2e-2, fp32)";
             // One front per distribution is one polyline only when there is one.
             if (front && !with_dist) {
                 for (const ReportRow* row : rows)

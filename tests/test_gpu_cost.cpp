@@ -442,3 +442,48 @@ TEST_CASE("gpu cost in a report: the front, the plots and the tables follow it",
     CHECK(time_only[0].second.find("lavapipe") != std::string::npos);
     CHECK(report_markdown(r).find("| – | – | – | – |") != std::string::npos);
 }
+
+TEST_CASE("the recommended row: cheapest within 2e-2 at the default shape and fp32, ringed",
+          "[gpu_cost]") {
+    auto row = [](const std::string& name, double error, double gpu_ratio) {
+        ReportRow r;
+        r.variant = *parse_variant(name, {});
+        r.name = name;
+        r.cases = 3;
+        r.ratio = gpu_ratio;
+        QuantityScore s;
+        s.quantity = "specular";
+        s.n = 3;
+        s.rel_l2 = error;
+        r.scores = {s};
+        GpuCost g;
+        g.family = "navi21";
+        g.wave = 64;
+        g.inverse_throughput = g.cost = static_cast<uint64_t>(100 * gpu_ratio);
+        g.ratio_to_point = gpu_ratio;
+        r.gpu = g;
+        return r;
+    };
+    Report r;
+    r.pattern = "dist=ggx";
+    r.gpu_device = "RADV navi21 (null device), Mesa 22.3.6";
+    r.rows = {
+        row("dist=ggx,method=point,light=polygon", 0.5, 1.0),     // too wrong
+        row("dist=ggx,method=ltc,light=polygon", 0.015, 2.0),     // the cheapest within 2e-2
+        row("dist=ggx,method=ltc,light=polygon,verts=4", 0.015, 1.5),  // another shape
+        row("dist=ggx,method=exact,light=polygon", 1e-7, 1.2),    // fp64: never
+        row("dist=ggx,method=lorentz,light=polygon", 0.01, 50.0),
+        // No sphere row is within 2e-2: the most accurate one.
+        row("dist=ggx,method=ltc,light=sphere", 0.04, 3.0),
+        row("dist=ggx,method=point,light=sphere", 0.3, 1.0)};
+    mark_recommended(r.rows);
+    std::vector<bool> got;
+    for (const auto& x : r.rows) got.push_back(x.recommended);
+    CHECK(got == std::vector<bool>{false, true, false, false, false, true, false});
+    const auto pics = report_pictures(r);
+    REQUIRE(!pics.empty());
+    CHECK(pics[0].second.find("recommended (error &lt;= 2e-2, fp32)") != std::string::npos);
+    CHECK(pics[0].second.find("r=\"8\" fill=\"none\"") != std::string::npos);
+    CHECK(report_markdown(r).find(" ★ |") != std::string::npos);
+    CHECK(nlohmann::json::parse(report_json(r))["rows"][1]["recommended"] == true);
+}

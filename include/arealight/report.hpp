@@ -107,6 +107,11 @@ struct ReportRow {
     // On the error-cost front of its distribution, shape and value; the cost is the
     // GPU cost's ratio to the point light when every row has one, else the time ratio.
     bool pareto = false;
+    // What `generate --scene` would pick by this report's rows at the default quality
+    // (CONTRACT.md 7): per value, distribution and light, among the rows of the default
+    // shape (sided=any, verts=8) that are not fp64, the cheapest (the front's cost) whose
+    // error() is at most kDefaultMaxError, or the most accurate when none is.
+    bool recommended = false;
 };
 
 struct Report {
@@ -132,6 +137,8 @@ struct Report {
 // the same cases) is at most as costly and at most as wrong, and better in one. Cost:
 // the GPU cost's ratio to the point light when every row has one, else the time ratio.
 void mark_pareto(std::vector<ReportRow>& rows);
+// Sets each row's `recommended` (above).
+void mark_recommended(std::vector<ReportRow>& rows);
 
 // Phase name ("reference", "compile", "gpu cost", "time"), done, total.
 using PhaseProgress = std::function<void(const std::string&, std::size_t, std::size_t)>;

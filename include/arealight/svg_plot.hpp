@@ -28,6 +28,8 @@ struct Plot {
     std::vector<PlotSeries> series;
     std::vector<PlotPoint> front;  // drawn as a dashed polyline over the series
     std::string front_name;        // its legend entry
+    std::vector<PlotPoint> highlight;  // drawn as a ring around the series' points
+    std::string highlight_name;        // its legend entry
     int width = 760, height = 480;
 };
 
