@@ -35,6 +35,7 @@
 #include "gpu_cost.hpp"
 #include "gpu_family.hpp"
 #include "print_diagnostic.hpp"
+#include "replot.hpp"
 #include "progress.hpp"
 #include "quality.hpp"
 #include "render.hpp"
@@ -443,6 +444,8 @@ int main(int argc, char** argv) {
                      "exponents to sweep, as --value (repeatable; --axis param on phong or "
                      "blinn only)")
         ->check(CLI::Range(1.0, 100000.0));
+    arealight::cli::ReplotArgs replot_args;
+    auto* replot = arealight::cli::add_replot_command(app, replot_args);
     arealight::cli::FitLtcArgs fit_args;
     auto* fit_ltc = arealight::cli::add_fit_ltc_command(app, fit_args);
     arealight::cli::QualityArgs quality_args;
@@ -470,6 +473,7 @@ int main(int argc, char** argv) {
     if (variants->parsed()) return run_variants();
     if (report->parsed()) return run_report(rep, false);
     if (sweep->parsed()) return run_report(swp, true);
+    if (replot->parsed()) return arealight::cli::run_replot(replot_args);
     if (eval->parsed()) return run_eval(cases_path, variant, backend, device, eval_lang, out_path);
     if (generate->parsed()) return arealight::cli::run_generate(generate_args, print_diagnostic);
     if (bench->parsed())

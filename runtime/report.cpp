@@ -166,6 +166,25 @@ void mark_pareto(std::vector<ReportRow>& rows) {
     }
 }
 
+namespace {
+
+// A sweep's parameter (its JSON key), symbol and axis label, from its axis and the
+// distribution of its variants.
+void set_sweep_labels(Report& report, Distribution dist) {
+    if (report.axis == SweepAxis::Param) {
+        const SweepParameter& p = sweep_parameter(dist);
+        report.parameter = p.field;
+        report.symbol = p.symbol;
+        report.axis_label = p.field == "alpha" ? "roughness α" : "exponent N";
+    } else if (report.axis == SweepAxis::View) {
+        report.parameter = "cos_theta_v";
+        report.symbol = "cos θ_v";
+        report.axis_label = "cos θ_v (1: view along the normal, 0.01: grazing)";
+    }
+}
+
+}  // namespace
+
 void mark_recommended(std::vector<ReportRow>& rows) {
     const bool gpu = std::all_of(rows.begin(), rows.end(), has_gpu_ratio);
     auto cost = [gpu](const ReportRow& r) { return gpu ? r.gpu->ratio_to_point : r.ratio; };
@@ -304,15 +323,10 @@ std::optional<Report> run_report(Evaluator& ev, const CaseSet& cases, const Repo
             return fail(fmt::format(
                 "a parameter sweep needs the variants of one distribution; '{}' matches several",
                 opt.pattern));
-        const SweepParameter& p = sweep_parameter(variants.front().dist);
-        report.parameter = p.field;
-        report.symbol = p.symbol;
-        report.axis_label = p.field == "alpha" ? "roughness α" : "exponent N";
-        if (values.empty()) values = p.values;
+        set_sweep_labels(report, variants.front().dist);
+        if (values.empty()) values = sweep_parameter(variants.front().dist).values;
     } else if (opt.axis == SweepAxis::View) {
-        report.parameter = "cos_theta_v";
-        report.symbol = "cos θ_v";
-        report.axis_label = "cos θ_v (1: view along the normal, 0.01: grazing)";
+        set_sweep_labels(report, variants.front().dist);
         if (values.empty()) values = view_sweep_cosines();
     } else {
         values = {0.0};  // a report: every case as given
@@ -523,6 +537,90 @@ std::string report_json(const Report& r) {
     return j.dump(1) + "\n";
 }
 
+std::optional<Report> read_report_json(const std::string& text, const std::string& file,
+                                       const DiagnosticConsumer& diag) {
+    auto fail = [&](const std::string& where, const std::string& what) -> std::optional<Report> {
+        if (diag) diag({Severity::Error, file, 0, fmt::format("{}: {}: {}", file, where, what)});
+        return std::nullopt;
+    };
+    // Ordered: the quantities' scores keep the order the file lists them in.
+    const auto doc = nlohmann::ordered_json::parse(text, nullptr, false);
+    if (!doc.is_object()) return fail("document", "not JSON");
+    if (doc.value("format", "") != "arealight-report/1")
+        return fail("field 'format'", "not \"arealight-report/1\"");
+    if (!doc.contains("rows") || !doc["rows"].is_array() || doc["rows"].empty())
+        return fail("field 'rows'", "missing, not an array, or empty");
+    Report r;
+    try {
+        r.pattern = doc.at("pattern").get<std::string>();
+        r.case_files = doc.at("case_files").get<std::vector<std::string>>();
+        r.device = doc.at("device").get<std::string>();
+        r.gpu_device = doc.value("gpu_device", "");
+        r.seconds = doc.at("seconds").get<double>();
+    } catch (const nlohmann::json::exception& e) {
+        return fail("header", e.what());
+    }
+    if (doc.contains("axis")) {
+        const auto axis = doc["axis"].is_string() ? parse_sweep_axis(doc["axis"]) : std::nullopt;
+        if (!axis) return fail("field 'axis'", "neither \"param\" nor \"view\"");
+        r.axis = *axis;
+    }
+    for (std::size_t i = 0; i < doc["rows"].size(); ++i) {
+        const auto& o = doc["rows"][i];
+        const std::string where = fmt::format("row {}", i);
+        ReportRow row;
+        std::string why;
+        try {
+            row.name = o.at("variant").get<std::string>();
+            const auto v = parse_variant(row.name, [&](const Diagnostic& d) { why = d.message; });
+            if (!v) return fail(where + ": field 'variant'", why);
+            row.variant = *v;
+            row.baseline = o.at("baseline").get<std::string>();
+            row.cases = o.at("cases").get<std::size_t>();
+            row.spirv_instructions = o.at("spirv_instructions").get<std::size_t>();
+            row.x86_instructions = o.at("x86_instructions").get<std::size_t>();
+            row.table_bytes = o.at("table_bytes").get<std::size_t>();
+            row.texture_fetches = o.at("texture_fetches").get<std::size_t>();
+            row.ns_per_case = o.at("ns_per_case").get<double>();
+            row.ratio = o.at("ratio_to_point").get<double>();
+            if (o.contains("gpu")) {
+                auto g = parse_gpu_cost(nlohmann::json::parse(o["gpu"].dump()), why);
+                if (!g) return fail(where + ": field 'gpu'", why);
+                row.gpu = *g;
+            }
+            auto num = [](const nlohmann::ordered_json& x) {
+                return x.is_number() ? x.get<double>() : NAN;
+            };
+            for (auto it = o.at("error").begin(); it != o.at("error").end(); ++it) {
+                QuantityScore s;
+                s.quantity = it.key();
+                const auto& q = it.value();
+                s.n = q.at("n").get<std::size_t>();
+                s.missing = q.at("missing").get<std::size_t>();
+                s.bad = q.at("bad").get<std::size_t>();
+                s.median = num(q.at("median"));
+                s.p95 = num(q.at("p95"));
+                s.max = num(q.at("max"));
+                s.rel_l2 = num(q.at("rel_l2"));
+                s.worst = q.at("worst").get<std::string>();
+                row.scores.push_back(std::move(s));
+            }
+        } catch (const nlohmann::json::exception& e) {
+            return fail(where, e.what());
+        }
+        if (r.sweep()) {
+            if (i == 0) set_sweep_labels(r, row.variant.dist);
+            if (!o.contains(r.parameter) || !o[r.parameter].is_number())
+                return fail(where, fmt::format("field '{}' missing or not a number", r.parameter));
+            row.value = o[r.parameter].get<double>();
+        }
+        r.rows.push_back(std::move(row));
+    }
+    mark_pareto(r.rows);
+    mark_recommended(r.rows);
+    return r;
+}
+
 namespace {
 
 // Table bytes as the reader wants them: – for none, KiB above 1 KiB.
@@ -658,10 +756,7 @@ std::string report_markdown(const Report& r) {
         "reference` (median, p95, max) and relative L2, the metric of `shared/tools/score`; "
         "the second quantity is moment for phong and ndf for the microfacet distributions. "
         "front: on the error–cost Pareto front of its distribution and shape (error = the "
-        "larger relL2 of specular and moment or ndf; cost = {}); ★: recommended, what "
-        "`generate --scene` would pick by these rows at the default quality (per distribution "
-        "and light, default shape, not fp64: the cheapest with error <= 2e-2, else the most "
-        "accurate), ringed in report.svg.\n\n",
+        "larger relL2 of specular and moment or ndf; cost = {}){}.\n\n",
         sweep ? "sweep" : "report", sweep ? "sweep" : "report", r.pattern, files, r.device,
         r.rows.size(), r.seconds, over,
         r.gpu_device.empty()
@@ -673,7 +768,11 @@ std::string report_markdown(const Report& r) {
                   "× point against the point light's, measured the same way; VGPRs (spilled) "
                   "and waves per SIMD of the module as written.\n\n",
                   r.gpu_device),
-        r.by_gpu_cost() ? "GPU cost × point" : "time × point");
+        r.by_gpu_cost() ? "GPU cost × point" : "time × point",
+        sweep ? ""
+              : "; ★: recommended, what `generate --scene` would pick by these rows at the "
+                "default quality (per distribution and light, default shape, not fp64: the "
+                "cheapest with error <= 2e-2, else the most accurate), ringed in report.svg");
     std::vector<const ReportRow*> all, shape;
     const Variant d;
     for (const auto& row : r.rows) {

@@ -5,6 +5,7 @@
 # LLVM it JITs with) are not ours and are suppressed by scripts/lsan-driver.supp, which
 # names only those libraries.
 #   SANITIZE_CTEST_ARGS="-R io" scripts/sanitize.sh    other tests (" " for all of them)
+#   SANITIZE_MIRROR=1 scripts/sanitize.sh              the CPU mirror instrumented too
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # vptr (UBSan's dynamic-type check) is off: Debian's glslang is built without RTTI, and the
@@ -12,13 +13,21 @@ cd "$(dirname "$0")/.."
 flags="-fsanitize=address,undefined -fno-sanitize=vptr -fno-omit-frame-pointer"
 # gcc 12 warns maybe-uninitialized inside libstdc++'s <regex> under ASan (false positives).
 flags+=" -fno-sanitize-recover=all -Wno-maybe-uninitialized"
-# -O1 -g1: the build (every variant's CPU mirror compiled with instrumentation) is most of
-# this script's time; at RelWithDebInfo it took 14 of CI's 30 minutes. -O1 keeps ASan's
-# reports and line numbers (g1: functions and lines, no locals).
-# The CPU mirror (every variant's templates as C++, 32 MB) at -O0: still instrumented,
-# but its compile is a quarter of -O1's (30 against 111 s per shard, measured here).
+# -O1 -g1: ASan's reports keep their line numbers (g1: functions and lines, no locals).
+# The CPU mirror (every variant's templates as C++, 32 MB) is the Release tree's
+# (AREALIGHT_PREBUILT_MIRROR, built by scripts/build.sh, brought up to date here): compiled
+# under the sanitizers it was most of this script's build (4 shards, 30 s each at -O0, 111 s
+# at -O1) and, uninstrumented at -O0, most of the time of the numeric tests. Its generated
+# code is the templates' (the same text as the shaders, checked by glslang and spirv-val);
+# SANITIZE_MIRROR=1 compiles it under the sanitizers too, at -O0.
+if [ "${SANITIZE_MIRROR:-0}" = 1 ]; then
+  mirror_args=(-DAREALIGHT_PREBUILT_MIRROR= -DAREALIGHT_MIRROR_FLAGS=-O0)
+else
+  bash scripts/build.sh arealight_mirror >/dev/null
+  mirror_args=(-DAREALIGHT_PREBUILT_MIRROR="$PWD/build/generator/libarealight_mirror.a")
+fi
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1 -g1 $flags" \
-  -DCMAKE_EXE_LINKER_FLAGS="$flags" -DAREALIGHT_MIRROR_FLAGS=-O0 >/dev/null
+  -DCMAKE_EXE_LINKER_FLAGS="$flags" "${mirror_args[@]}" >/dev/null
 cmake --build build-asan -j"$(nproc)"
 
 export ASAN_OPTIONS="detect_leaks=1:strict_init_order=1:check_initialization_order=1"

@@ -487,3 +487,66 @@ TEST_CASE("the recommended row: cheapest within 2e-2 at the default shape and fp
     CHECK(report_markdown(r).find(" ★ |") != std::string::npos);
     CHECK(nlohmann::json::parse(report_json(r))["rows"][1]["recommended"] == true);
 }
+
+TEST_CASE("a report read back from its JSON writes the same JSON, and says where it is broken",
+          "[gpu_cost]") {
+    ReportRow a;
+    a.variant = *parse_variant("dist=ggx,method=ltc,light=polygon", {});
+    a.name = canonical_name(a.variant);
+    a.baseline = "dist=ggx,method=point,light=polygon";
+    a.cases = 7;
+    a.spirv_instructions = 900;
+    a.x86_instructions = 8000;
+    a.table_bytes = 131072;
+    a.texture_fetches = 2;
+    a.ns_per_case = 190.5;
+    a.ratio = 2.46;
+    for (const char* q : {"diffuse", "specular", "ndf"}) {
+        QuantityScore s;
+        s.quantity = q;
+        s.n = 7;
+        s.median = 1e-3;
+        s.p95 = 0.2;
+        s.max = 0.5;
+        s.rel_l2 = 0.012;
+        s.worst = "case-3";
+        a.scores.push_back(s);
+    }
+    GpuCost g;
+    g.family = "navi21";
+    g.mesa = "22.3.6";
+    g.wave = 64;
+    g.instructions = 2700;
+    g.vgprs = 96;
+    g.inverse_throughput = g.cost = 986;
+    g.ratio_to_point = 1.98;
+    a.gpu = g;
+    Report r;
+    r.pattern = "dist=ggx,light=polygon";
+    r.case_files = {"typical.cases.json"};
+    r.device = "llvmpipe";
+    r.gpu_device = "RADV navi21 (null device), Mesa 22.3.6";
+    r.seconds = 12;
+    r.rows = {a};
+    mark_pareto(r.rows);
+    mark_recommended(r.rows);
+    const std::string json = report_json(r);
+    Collected diag;
+    const auto back = read_report_json(json, "r.json", diag.consumer());
+    INFO(diag.text);
+    REQUIRE(back);
+    CHECK(report_json(*back) == json);
+    CHECK(report_markdown(*back) == report_markdown(r));
+    CHECK(back->rows[0].recommended);
+
+    auto doc = nlohmann::json::parse(json);
+    doc["rows"][0].erase("cases");
+    Collected broken;
+    CHECK_FALSE(read_report_json(doc.dump(), "r.json", broken.consumer()));
+    INFO(broken.text);
+    CHECK(broken.text.find("r.json: row 0") != std::string::npos);
+    CHECK(broken.text.find("cases") != std::string::npos);
+    Collected not_report;
+    CHECK_FALSE(read_report_json("{\"format\": \"x\"}", "x.json", not_report.consumer()));
+    CHECK(not_report.text.find("x.json: field 'format'") != std::string::npos);
+}

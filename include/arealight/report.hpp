@@ -151,6 +151,12 @@ std::optional<Report> run_report(Evaluator& ev, const CaseSet& cases, const Repo
                                  const PhaseProgress& progress = {});
 
 std::string report_json(const Report& r);
+// A report back from report_json's text (`file` names it in diagnostics), with each row's
+// pareto and recommended marked again by today's rules: what `arealight replot` draws
+// the markdown and pictures from, without measuring again. nullopt, with a diagnostic
+// naming the file, the row and the field, on a malformed document.
+std::optional<Report> read_report_json(const std::string& text, const std::string& file,
+                                       const DiagnosticConsumer& diag);
 std::string report_markdown(const Report& r);
 // The pictures, as (file name, SVG text): for a report, error (log) against cost
 // ratio to the point light (log), one point per variant, coloured by method, the
