@@ -247,6 +247,86 @@ void emit_hlsl_postlude(std::string& out) {
         out += fmt::format("#undef {}\n", m);
 }
 
+// Whether an identifier names a vector type of the templates, as written or renamed
+// (vec3, ivec2, rvec3, al_polygon_ggx_rvec3, hvec2 ...).
+bool vector_type_name(const std::string& id) {
+    std::string base = id;
+    for (const char* word : {"_rvec", "_hvec"}) {
+        const std::size_t at = id.rfind(word);
+        if (id.rfind("al_", 0) == 0 && at != std::string::npos) base = id.substr(at + 1);
+    }
+    if (base.size() != 4 && base.size() != 5) return false;
+    const char n = base.back();
+    if (n < '2' || n > '4') return false;
+    const std::string stem = base.substr(0, base.size() - 1);
+    return stem == "vec" || stem == "ivec" || stem == "uvec" || stem == "bvec" ||
+           stem == "rvec" || stem == "hvec";
+}
+
+// GLSL's one-argument vector constructor (a splat, vec3(0.0), or a conversion,
+// vec3(v4)) is no HLSL: dxc wants every component ("too few elements in vector
+// initialization"; glslang takes it). HLSL's cast does both: T(x) becomes ((T)(x)), on
+// the same line. Comments and preprocessor lines are left alone.
+std::string hlsl_vector_casts(const std::string& text) {
+    std::string out;
+    out.reserve(text.size() + text.size() / 16);
+    const std::size_t n = text.size();
+    std::size_t i = 0;
+    bool line_start = true;
+    auto ident = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+    while (i < n) {
+        const char c = text[i];
+        if (c == '/' && i + 1 < n && (text[i + 1] == '/' || text[i + 1] == '*')) {
+            const bool line = text[i + 1] == '/';
+            const std::size_t end = line ? text.find('\n', i) : text.find("*/", i + 2);
+            const std::size_t stop = end == std::string::npos ? n : (line ? end : end + 2);
+            out.append(text, i, stop - i);
+            i = stop;
+            continue;
+        }
+        if (line_start && (c == ' ' || c == '\t')) {
+            out += c;
+            ++i;
+            continue;
+        }
+        if (line_start && c == '#') {
+            const std::size_t end = text.find('\n', i);
+            const std::size_t stop = end == std::string::npos ? n : end;
+            out.append(text, i, stop - i);
+            i = stop;
+            continue;
+        }
+        line_start = c == '\n';
+        if (!ident(c) || (i > 0 && ident(text[i - 1]))) {
+            out += c;
+            ++i;
+            continue;
+        }
+        std::size_t j = i;
+        while (j < n && ident(text[j])) ++j;
+        const std::string id = text.substr(i, j - i);
+        if (j < n && text[j] == '(' && vector_type_name(id)) {
+            // The balanced argument list, and whether it has a comma at its top level.
+            int depth = 0;
+            bool comma = false;
+            std::size_t k = j;
+            for (; k < n; ++k) {
+                if (text[k] == '(') ++depth;
+                if (text[k] == ')' && --depth == 0) break;
+                if (text[k] == ',' && depth == 1) comma = true;
+            }
+            if (k < n && !comma) {
+                out += "((" + id + ")(" + hlsl_vector_casts(text.substr(j + 1, k - j - 1)) + "))";
+                i = k + 1;
+                continue;
+            }
+        }
+        out.append(text, i, j - i);
+        i = j;
+    }
+    return out;
+}
+
 // HLSL reads a global `const` as a uniform (its initialiser ignored): the templates'
 // global constants, the only declarations they start at column 0 with `const`, become
 // `static const`.
@@ -510,7 +590,8 @@ void emit_library(std::string& out, const std::vector<Variant>& variants, Langua
             out.substr(start), v,
             lang == Language::Cpp ? RenameScope::Prefixed : RenameScope::EveryName);
         out.replace(start, std::string::npos,
-                    lang == Language::Hlsl ? hlsl_static_constants(chunk) : chunk);
+                    lang == Language::Hlsl ? hlsl_vector_casts(hlsl_static_constants(chunk))
+                                           : chunk);
         for (const auto& [entry, s] : entries) {
             if (lang == Language::Hlsl && s.shares < 0) {
                 const std::string marker = hlsl_table_marker(entry);
