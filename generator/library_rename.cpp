@@ -10,15 +10,12 @@
 #include <set>
 #include <string>
 
+#include "ascii_upper.hpp"
 #include "arealight/generator.hpp"
 
 namespace arealight {
 namespace {
 
-std::string upper(std::string s) {
-    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return s;
-}
 
 // Names the mirror's support header defines (include/arealight/mirror_support.hpp):
 // shared by every variant, never renamed.
@@ -116,7 +113,7 @@ bool rename_prefixed(const std::string& id, const std::string& tag, std::string&
     if (id.rfind("al_", 0) == 0) {
         out = "al_" + tag + "_" + id.substr(3);
     } else if (id.rfind("AL_", 0) == 0) {
-        out = "AL_" + upper(tag) + "_" + id.substr(3);
+        out = "AL_" + ascii_upper(tag) + "_" + id.substr(3);
     } else if (id.size() > 2 && id.rfind("Al", 0) == 0 &&
                std::isupper(static_cast<unsigned char>(id[2]))) {
         out = "Al" + camel(tag) + id.substr(2);

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <set>
 
+#include "ascii_upper.hpp"
 #include "arealight/fnv_hash.hpp"
 #include "arealight/generator.hpp"
 #include "embedded_templates.hpp"
@@ -67,10 +68,6 @@ int count_lines(const std::string& s) {
     return lines;
 }
 
-std::string upper(std::string s) {
-    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return s;
-}
 
 
 // The suffix of a literal at the variant's working precision: fp64 GLSL needs lf
@@ -104,7 +101,7 @@ std::string expand_literals(const std::string& text, const std::string& suffix) 
 // the working precision: the templates compute in `real` and `rvec2..4`.
 void emit_language_macros(std::string& out, const Variant& v, Language lang) {
     const bool glsl = lang == Language::Glsl;
-    out += fmt::format("#define AL_LANG_{} 1\n", upper(to_string(lang)));
+    out += fmt::format("#define AL_LANG_{} 1\n", ascii_upper(to_string(lang)));
     out += lang == Language::Cpp ? "#define AL_INOUT(T) T&\n" : "#define AL_INOUT(T) inout T\n";
     // A loop of constant trip count the GPU should run unrolled: SPIR-V's Unroll loop
     // control, which Mesa's NIR (RADV, lavapipe) and other drivers honour; the C++
@@ -506,12 +503,12 @@ std::string library_function_name(const Variant& v) {
 
 std::string sampler_binding_macro(const Variant& v, const std::string& sampler) {
     const std::string bare = sampler.rfind("al_", 0) == 0 ? sampler.substr(3) : sampler;
-    return fmt::format("AREALIGHT_{}_{}_BINDING", upper(library_tag(v)), upper(bare));
+    return fmt::format("AREALIGHT_{}_{}_BINDING", ascii_upper(library_tag(v)), ascii_upper(bare));
 }
 
 std::string sampler_register_macro(const Variant& v, const std::string& sampler) {
     const std::string bare = sampler.rfind("al_", 0) == 0 ? sampler.substr(3) : sampler;
-    return fmt::format("AREALIGHT_{}_{}_REGISTER", upper(library_tag(v)), upper(bare));
+    return fmt::format("AREALIGHT_{}_{}_REGISTER", ascii_upper(library_tag(v)), ascii_upper(bare));
 }
 
 const char* to_string(Language lang) {
@@ -612,8 +609,8 @@ void emit_library(std::string& out, const std::vector<Variant>& variants, Langua
                                     library_rename(first.sampler, variants[first.variant])));
         }
         // What a renderer can #ifdef on (not renamed: outside the variant's namespace).
-        out += fmt::format("#define AREALIGHT_HAS_{}_{} 1\n", upper(to_string(v.light)),
-                           upper(to_string(v.dist)));
+        out += fmt::format("#define AREALIGHT_HAS_{}_{} 1\n", ascii_upper(to_string(v.light)),
+                           ascii_upper(to_string(v.dist)));
     }
     if (lang == Language::Hlsl) emit_hlsl_postlude(out);
     const std::string hash = fmt::format("{:016X}", fnv1a(std::string_view(out).substr(body_at)));

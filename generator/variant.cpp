@@ -4,6 +4,7 @@
 // of each, and its templates). Adding a key or a family is a row here (and, for a
 // key, its typed field in Variant); parsing, validity, canonical names, enumeration,
 // defines, pattern matching and every error message follow from the rows.
+#include "ascii_upper.hpp"
 #include "arealight/variant.hpp"
 
 #include <fmt/format.h>
@@ -61,10 +62,6 @@ DefineRule flag(const char* name, const char* on_value) {
     return mapped(name, {{on_value, "1"}});
 }
 
-std::string upper(std::string s) {
-    for (auto& ch : s) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
-    return s;
-}
 
 std::optional<std::pair<std::string, std::string>> define_of(const DefineRule& rule,
                                                              const std::string& value) {
@@ -72,7 +69,7 @@ std::optional<std::pair<std::string, std::string>> define_of(const DefineRule& r
         case DefineRule::Form::None:
             return std::nullopt;
         case DefineRule::Form::OneHot:
-            return std::make_pair(rule.name + upper(value), std::string("1"));
+            return std::make_pair(rule.name + ascii_upper(value), std::string("1"));
         case DefineRule::Form::Number:
             return std::make_pair(rule.name, value);
         case DefineRule::Form::Mapped:

@@ -109,11 +109,11 @@ TEST_CASE("ltc: bounded specular error on random polygons, exact diffuse, backen
     }
 }
 
-// The public validation sets' GGX polygon cases (tests/data/ltc_ggx_polygon_public.cases.json:
-// typical, horizon, glossy of shared/validation, ids kept), per set: specular relL2 of
-// table=texture and table=fit against the oracle. Bars about 1.3x the measured value
-// (in brackets, both backends alike); table=fit against table=texture on each set within
-// kFitOverTexture.
+// The public validation sets' GGX polygon cases (tests/data/ltc_ggx_polygon_public.cases.json,
+// written by scripts/extract_cases.py from typical, horizon and glossy of shared/validation,
+// ids kept), per set: specular relL2 of table=texture and table=fit against the oracle.
+// Bars about 1.3x the measured value (in brackets, both backends alike); table=fit against
+// table=texture on each set within kFitOverTexture.
 struct PublicBar {
     const char* set;  // the ids' prefix
     double texture;
