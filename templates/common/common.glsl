@@ -4,6 +4,17 @@
 // math is written over `real`/`rvec3` (the variant's precision), and the stitcher
 // gives every literal wrapped in AL_R the suffix of that precision (stitcher.cpp).
 
+// The peak-function methods on polygons at fp32 (errors ~1e-2 by construction) take
+// cheaper forms of atan2 and log (AL_FAST_ARC below): on RDNA2 (navi21, `arealight
+// gpu-cost`) they cut GGX lorentz from 29 124 to 24 555 cycles per wave, Phong lorentz
+// from 11 480 to 9 509, and change no public set's relL2 by more than 0.5%. The exact and
+// other methods keep the ulp-accurate forms their 1e-5 bars need, and so do curved lights:
+// there the Phong boundary's horizon cases went from 0.0024 to 0.021 with them.
+#if !AL_PRECISION_FP64 && defined(AL_LIGHT_POLYGON) && \
+    (defined(AL_METHOD_LORENTZ) || defined(AL_METHOD_PEARSON) || defined(AL_METHOD_ELLIPSOID))
+#define AL_FAST_ARC 1
+#endif
+
 const real AL_PI = AL_R(3.14159265358979323846);
 const real AL_TWO_PI = AL_R(6.28318530717958647692);
 const real AL_HALF_PI = AL_R(1.57079632679489661923);
@@ -94,7 +105,20 @@ real al_atan_unit(real t) {
 real al_atan2(real y, real x) {
     real ax = abs(x), ay = abs(y);
     if (ax == AL_R(0.0) && ay == AL_R(0.0)) return AL_R(0.0);
+#ifdef AL_FAST_ARC
+    // AL_FAST_ARC: atan on [0, 1] by one odd polynomial of degree 11 (no reduction),
+    // |error| < 1.7e-6 rad (2.3e-5 relative near 0), checked in double on 2e5 points.
+    real t = min(ax, ay) / max(ax, ay), z = t * t;
+    real p = AL_R(-0.01172120);
+    p = p * z + AL_R(0.05265332);
+    p = p * z - AL_R(0.11643287);
+    p = p * z + AL_R(0.19354346);
+    p = p * z - AL_R(0.33262347);
+    p = p * z + AL_R(0.99997726);
+    real a = t * p;
+#else
     real a = al_atan_unit(min(ax, ay) / max(ax, ay));
+#endif
     real r = ay <= ax ? a : AL_HALF_PI - a;
     if (x < AL_R(0.0)) r = AL_PI - r;
     return y < AL_R(0.0) ? -r : r;
@@ -104,6 +128,10 @@ real al_atan2(real y, real x) {
 // log m = al_log_ratio_series((m - 1) / (m + 1)). Error a few ulp (lavapipe's fp32
 // log: 7e-6 relative; GLSL has no fp64 log).
 real al_log(real x) {
+#ifdef AL_FAST_ARC
+    // AL_FAST_ARC: the driver's log (lavapipe: 7e-6 relative).
+    return log(x);
+#endif
     AL_FREXP_EXPONENT e;  // frexp's exponent: int in GLSL and C++, float in HLSL
     real m = frexp(x, e);
     if (m < AL_R(0.70710678118654752440)) {

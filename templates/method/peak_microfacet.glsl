@@ -19,9 +19,9 @@
 // (tests/test_peak_microfacet.cpp checks it by quadrature of al_mix_ndf).
 //
 // GPU cost (navi21, `arealight gpu-cost`, the validation kernel, polygon, against the
-// point light's 498-573): lorentz 19 844 / 19 850 / 29 124 (blinn / beckmann / ggx;
-// 35-59x), pearson 35 248 / 36 211 (beckmann / ggx; 64-73x), ellipsoid 38 550 / 38 562 /
-// 54 324 (67-109x).
+// point light's 498-573; with AL_FAST_ARC, common/common.glsl): lorentz 16 945 / 16 954 /
+// 24 555 (blinn / beckmann / ggx; 30-49x), pearson 29 346 / 30 325 (beckmann / ggx;
+// 53-61x), ellipsoid 32 645 / 32 627 / 46 530 (57-93x).
 //
 // The paper's formulas, checked numerically (the copy we read garbles some):
 // - eq. 23: int D_Blinn dh = (N+2)/(2 pi) int (n.h)^N dh = (N+2)/(N+1) mu_N. As printed.

@@ -57,9 +57,10 @@
 // matches the true half width to ~0.01 rad), b = a/2 (pearson),
 // b = a (2.1 + 1.28 x_w / x_w(0)) (ellipsoid), tail point eq. 14, alpha clamped.
 // Measured error: see docs/methods.md (arealight report). GPU cost (navi21, `arealight
-// gpu-cost`, the validation kernel, polygon, against the point light's 457): lorentz
-// 11 480 (25.1x), fit=paper 7 254 (15.9x); pearson 13 262 (29x); ellipsoid 19 742 (43.2x):
-// one edge loop, counted by ACO as 8 iterations of ~1 300 cycles each.
+// gpu-cost`, the validation kernel, polygon, against the point light's 457; with
+// AL_FAST_ARC, common/common.glsl): lorentz 9 509 (20.8x), fit=paper 5 717 (12.5x);
+// pearson 10 952 (24x); ellipsoid 16 815 (36.8x): one edge loop, counted by ACO as 8
+// iterations of ~1 100 cycles each.
 
 #define AL_PEAK_LOG_FAR AL_R(-2.3)
 // Integral over the arc of the ellipse's Q = a cos^2 / (sin^2 + a cos^2) =
