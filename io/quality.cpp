@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "arealight/gpu_cost_json.hpp"
-#include "case_fields.hpp"
+#include "json_fields.hpp"
 
 namespace arealight {
 namespace {

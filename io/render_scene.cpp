@@ -9,7 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include "arealight/read_file.hpp"
-#include "case_fields.hpp"
+#include "json_fields.hpp"
+#include "shading_schema.hpp"
 
 namespace arealight {
 namespace {

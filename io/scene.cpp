@@ -1,5 +1,5 @@
 // arealight-scene/1 reader: the top level here, every light and material field through the
-// case reader's own checks (case_fields.hpp), so the two formats cannot drift apart.
+// schema case files use too (shading_schema.hpp), so the two formats cannot drift apart.
 #include "arealight/scene.hpp"
 
 #include <fmt/format.h>
@@ -7,7 +7,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "case_fields.hpp"
+#include "json_fields.hpp"
+#include "shading_schema.hpp"
 
 namespace arealight {
 namespace {

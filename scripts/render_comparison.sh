@@ -35,7 +35,8 @@ render() {
 CACHE=${REFERENCE_CACHE:-data/render}
 cached=0
 oracle_inputs=(reference/*.cpp reference/*.hpp
-  io/case.cpp io/case_io.cpp io/case_fields.hpp io/scene.cpp io/render_scene.cpp io/pfm_image.cpp
+  io/case.cpp io/case_io.cpp io/json_fields.cpp io/json_fields.hpp io/shading_schema.cpp
+  io/shading_schema.hpp io/scene.cpp io/render_scene.cpp io/pfm_image.cpp
   io/png_image.cpp io/read_file.cpp render/raycast.cpp render/render.cpp render/tone_map.cpp
   include/arealight/{case,case_io,image,pfm_image,png_image,raycast,reference,render}.hpp
   include/arealight/{render_scene,scene,tone_map}.hpp)

@@ -7,20 +7,19 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # Seconds of each step on stderr, so that CI's log says where its time went.
+#   step NAME COMMAND...
 step() {
-  local t0=$SECONDS
+  local name=$1 t0=$SECONDS
+  shift
   "$@"
-  echo "test.sh: $* took $((SECONDS - t0)) s" >&2
+  echo "test.sh: $name took $((SECONDS - t0)) s" >&2
 }
-step bash scripts/setup.sh
-# The CPU mirror (every variant's math as C++, 32 MB) at -O1: 44 s a shard against 71 s at
-# -O3, and the tests that run it are lavapipe's and the oracle's time, not its own.
-export MIRROR_FLAGS="${MIRROR_FLAGS:--O1}"
-step bash scripts/build.sh
+step setup bash scripts/setup.sh
+step build bash scripts/build.sh
 plain_only=$(grep -v '^#' scripts/plain_only_tests.txt | grep -v '^$' | paste -sd'|')
 if [ "${PLAIN_ALL:-0}" = 1 ]; then plain_args=(); else plain_args=(-R "$plain_only"); fi
 # These first: they compile every listed variant on lavapipe, whose shader cache the
 # sanitized run then reads.
-step ctest --test-dir build --output-on-failure -j"$(nproc)" "${plain_args[@]}"
-step bash scripts/sanitize.sh
-FUZZ_SECONDS="${FUZZ_SECONDS:-20}" step bash scripts/fuzz.sh
+step "plain ctest" ctest --test-dir build --output-on-failure -j"$(nproc)" "${plain_args[@]}"
+step sanitize bash scripts/sanitize.sh
+FUZZ_SECONDS="${FUZZ_SECONDS:-20}" step fuzz bash scripts/fuzz.sh

@@ -32,6 +32,7 @@
 #define AL_INOUT(T) T&
 #define AL_ARRAY_BEGIN(T, N) {
 #define AL_FREXP_EXPONENT int
+#define AL_UNROLL
 #define AL_ARRAY_END }
 #define real double
 #define rvec2 dvec2

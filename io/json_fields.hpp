@@ -1,6 +1,6 @@
-// The case reader's file handling and field validation (io/case_io.cpp), shared with the
-// scene reader (io/scene.cpp) so that a scene's lights and materials are checked exactly as
-// a case's are (CONTRACT 7: "Lights and materials use the fields of section 3").
+// What every arealight JSON reader shares (case, result, scene, render scene and quality
+// files): reading the file, parsing it, and "FILE: WHERE: field 'F': reason" messages,
+// an unknown field named with the nearest known one (CONTRACT 3).
 #pragma once
 
 #include <initializer_list>
@@ -9,8 +9,6 @@
 #include <string>
 #include <string_view>
 
-#include "arealight/case.hpp"
-#include "arealight/case_io.hpp"
 #include "arealight/diagnostics.hpp"
 
 namespace arealight::io_detail {
@@ -53,17 +51,5 @@ std::string describe(const nlohmann::json& v);
 using FieldNames = std::initializer_list<std::string_view>;
 void check_fields(Reporter& rep, const std::string& where, const std::string& prefix,
                   const nlohmann::json& obj, FieldNames known, FieldNames extra = {});
-
-// Reads one light object (a case's "light" value) into `out`, every error reported under
-// `where` with its field named `prefix` + the light's own field ("light." in a case file,
-// "" in a scene, whose lights are listed on their own). `extra`: further fields the
-// caller's format allows there (a scene light's "intensity").
-void read_light_object(Reporter& rep, const std::string& where, const std::string& prefix,
-                       const nlohmann::json& light, const ValidationTolerances& tol, Light& out,
-                       FieldNames extra = {});
-
-// The same for a material object (a case's "material" value; a scene's adds "quality").
-void read_material_object(Reporter& rep, const std::string& where, const std::string& prefix,
-                          const nlohmann::json& material, Material& out, FieldNames extra = {});
 
 }  // namespace arealight::io_detail
