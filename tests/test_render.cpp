@@ -128,6 +128,13 @@ TEST_CASE("render scene: errors name the file, the item and the field", "[render
          "scene.json: field 'quality.max_error': -1 is not a positive number"},
         {R"("format": "arealight-scene/1")", R"("format": "arealight-cases/1")",
          "scene.json: field 'format': is \"arealight-cases/1\", expected \"arealight-scene/1\""},
+        // Unknown fields of the renderer's own objects, and of a light's renderer-only field.
+        {R"("fov_deg": 45)", R"("fov_deg": 45, "fov_degs": 50)",
+         "scene.json: camera: field 'fov_degs': unknown field (did you mean 'fov_deg'?)"},
+        {R"("albedo": [0.1, 0.6, 0.2])", R"("albedo": [0.1, 0.6, 0.2], "albdo": 1)",
+         "scene.json: object 2: field 'albdo': unknown field (did you mean 'albedo'?)"},
+        {R"("intensity": 0.5)", R"("intensity": 0.5, "intensty": 1)",
+         "scene.json: light 1: field 'intensty': unknown field (did you mean 'intensity'?)"},
     };
     for (const Row& r : rows) {
         const Collect c = errors_of(r.from, r.to);
