@@ -44,18 +44,17 @@ double norm(const Vec3& a) {
     return std::sqrt(dot(a, a));
 }
 
-using io_detail::parse_json;
-using io_detail::read_text;
 using io_detail::Reporter;
 
-// Reads and checks the fields of a light or a material. Independent fields are all checked, so one pass
-// reports every problem; a check that needs an earlier value runs only when it was valid.
+// Reads and checks the fields of a light or a material. Independent fields are all checked,
+// so one pass reports every problem; a check that needs an earlier value runs only when it
+// was valid.
 class ShadingReader {
   public:
     // light_prefix, material_prefix: what the fields of a light and a material are named
     // after ("light.vertices" in a case, "vertices" in a scene's list of lights).
     ShadingReader(Reporter& rep, std::string where, const ValidationTolerances& tol,
-               std::string light_prefix = "light.", std::string material_prefix = "material.")
+                  std::string light_prefix, std::string material_prefix)
         : rep_(rep),
           where_(std::move(where)),
           tol_(tol),
@@ -408,13 +407,13 @@ void read_material_object(Reporter& rep, const std::string& where, const std::st
 bool read_point(Reporter& rep, const std::string& where, const json& obj, const char* key,
                 const std::string& field, Vec3& out) {
     const ValidationTolerances unused;
-    return ShadingReader(rep, where, unused).vec3_field(obj, key, field, out);
+    return ShadingReader(rep, where, unused, {}, {}).vec3_field(obj, key, field, out);
 }
 
 bool read_direction(Reporter& rep, const std::string& where, const json& obj, const char* key,
                     const std::string& field, Vec3& out) {
     const ValidationTolerances unused;
-    return ShadingReader(rep, where, unused).direction(obj, key, field, out);
+    return ShadingReader(rep, where, unused, {}, {}).direction(obj, key, field, out);
 }
 
 }  // namespace io_detail
