@@ -57,6 +57,7 @@ AL_PMF_TEST_WRAPPERS
 #undef AL_PEAK_LOG_FAR
 #undef AL_PMF_N_MIN
 #undef AL_PMF_LOBES
+#undef AL_PMF_LOBE_LOOP
 #undef AL_PMF_TAB
 #undef AL_DIST_BLINN
 #define AL_DIST_BECKMANN 1
@@ -73,6 +74,7 @@ AL_PMF_TEST_WRAPPERS
 #undef AL_PEAK_LOG_FAR
 #undef AL_PMF_N_MIN
 #undef AL_PMF_LOBES
+#undef AL_PMF_LOBE_LOOP
 #undef AL_PMF_TAB
 #undef AL_DIST_BECKMANN
 #define AL_DIST_GGX 1
@@ -89,6 +91,7 @@ AL_PMF_TEST_WRAPPERS
 #undef AL_PEAK_LOG_FAR
 #undef AL_PMF_N_MIN
 #undef AL_PMF_LOBES
+#undef AL_PMF_LOBE_LOOP
 #undef AL_PMF_TAB
 #define AL_FIT_PAPER 1
 namespace pmf_ggx_paper {
@@ -104,6 +107,7 @@ AL_PMF_TEST_WRAPPERS
 #undef AL_PEAK_LOG_FAR
 #undef AL_PMF_N_MIN
 #undef AL_PMF_LOBES
+#undef AL_PMF_LOBE_LOOP
 #undef AL_PMF_TAB
 #undef AL_DIST_GGX
 #undef AL_FIT_PAPER

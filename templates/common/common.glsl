@@ -18,6 +18,13 @@
 const real AL_PI = AL_R(3.14159265358979323846);
 const real AL_TWO_PI = AL_R(6.28318530717958647692);
 const real AL_HALF_PI = AL_R(1.57079632679489661923);
+// The smallest normal number of the working precision, for guards that must keep a
+// divisor non-zero: 1e-300 rounds to 0 at fp32 and lets 0 / 0 through.
+#if AL_PRECISION_FP64
+const real AL_TINY = AL_R(2.2250738585072014e-308);
+#else
+const real AL_TINY = AL_R(1.17549435e-38);
+#endif
 
 // One shading problem as the methods see it, built from the renderer's values by
 // the light's library entry (library_<light>.glsl) in the working precision: p moved

@@ -132,8 +132,9 @@ real al_conic_split(rvec3 C, rvec3 U, rvec3 V, real psi0, real psi1, rvec3 a, rv
 // curvature term sets it, sqrt(2 |P|min / |P''|)). Newton on q = |P|^2 (q' = 2 P.P',
 // q'' = 2 (|P'|^2 + P.(C - P))) from the best of five samples, as al_conic_peak.
 rvec2 al_conic_nearest(rvec3 C, rvec3 U, rvec3 V, real psi0, real psi1) {
-    real best = psi0, best_q = AL_R(1e300);
-    for (int i = 0; i < 5; ++i) {
+    rvec3 P0 = al_conic_point(C, U, V, al_cis(psi0));
+    real best = psi0, best_q = dot(P0, P0);
+    for (int i = 1; i < 5; ++i) {
         real psi = mix(psi0, psi1, real(i) * AL_R(0.25));
         rvec3 P = al_conic_point(C, U, V, al_cis(psi));
         if (dot(P, P) < best_q) {
@@ -152,7 +153,7 @@ rvec2 al_conic_nearest(rvec3 C, rvec3 U, rvec3 V, real psi0, real psi1) {
     rvec2 sc = al_cis(best);
     rvec3 P = al_conic_point(C, U, V, sc), dP = V * sc.y - U * sc.x;
     real lp = length(P), l1 = length(dP), l2 = length(C - P);
-    return rvec2(best, AL_R(2.0) * lp / max(l1 + sqrt(l1 * l1 + AL_R(2.0) * l2 * lp), AL_R(1e-300)));
+    return rvec2(best, AL_R(2.0) * lp / max(l1 + sqrt(l1 * l1 + AL_R(2.0) * l2 * lp), AL_TINY));
 }
 
 // How a part [psi0, psi1] (at most pi/2) is integrated: up to four sub-parts, each

@@ -92,7 +92,7 @@ rvec4 al_lobe_conic(rvec3 C, rvec3 U, rvec3 V, rvec4 sub, rvec3 r, rvec3 n, real
                 real g0 = y > AL_R(1e-30) ? -al_expm1(N * lx) / y : AL_R(0.5) * N;
                 sum += wt * rvec4(rJ * g1, rJ * g0, nJ * xn, AL_R(0.0));
             }
-            if (y > AL_R(1e-300)) sum.w += wt * rJ / y;
+            if (y > AL_TINY) sum.w += wt * rJ / y;
         }
         acc += sum * half_width;
     }
