@@ -29,7 +29,7 @@ fi
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1 -g1 $flags" \
   -DCMAKE_EXE_LINKER_FLAGS="$flags" "${mirror_args[@]}" >/dev/null
 t0=$SECONDS
-cmake --build build-asan -j"$(nproc)"
+cmake --build build-asan -j"$(nproc)" --target arealight_test_programs
 echo "sanitize: build took $((SECONDS - t0)) s" >&2
 
 # Allocation stacks of 8 frames and a 64 MB quarantine (30 and 256 by default): glslang and
