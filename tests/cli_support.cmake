@@ -8,3 +8,14 @@ function(expect_exit code)
   set(LAST_ERR "${err}" PARENT_SCOPE)
   set(LAST_OUT "${out}" PARENT_SCOPE)
 endfunction()
+
+# Fails unless `text` contains every string after `what` (the file or output it is, named
+# in the message with the text itself).
+function(expect_contains text what)
+  foreach(s IN LISTS ARGN)
+    string(FIND "${text}" "${s}" at)
+    if(at EQUAL -1)
+      message(FATAL_ERROR "${what} lacks ${s}:\n${text}")
+    endif()
+  endforeach()
+endfunction()
