@@ -77,6 +77,14 @@ class ShadingReader {
         return true;
     }
 
+    bool text(const json& obj, const char* key, const std::string& path, std::string& out) {
+        auto it = obj.find(key);
+        if (it == obj.end()) return fail(path, "missing");
+        if (!it->is_string()) return fail(path, "must be a string");
+        out = it->get<std::string>();
+        return true;
+    }
+
     bool vec3(const json& v, const std::string& path, Vec3& out) {
         if (!v.is_array() || v.size() != 3) return fail(path, "must be an array of 3 numbers");
         for (std::size_t k = 0; k < 3; ++k) {
@@ -273,12 +281,8 @@ class ShadingReader {
     }
 
     void read_light_fields(const json& L, Light& light, io_detail::FieldNames extra = {}) {
-        auto t = L.find("type");
-        if (t == L.end() || !t->is_string()) {
-            fail(light_ + "type", t == L.end() ? "missing" : "must be a string");
-            return;
-        }
-        const std::string type = t->get<std::string>();
+        std::string type;
+        if (!text(L, "type", light_ + "type", type)) return;
         if (type == "polygon") {
             light.type = LightType::Polygon;
             known(L, light_, {"type", "vertices", "two_sided"}, extra);
@@ -335,12 +339,8 @@ class ShadingReader {
     }
 
     void read_material_fields(const json& M, Material& m, io_detail::FieldNames extra = {}) {
-        auto d = M.find("distribution");
-        if (d == M.end() || !d->is_string()) {
-            fail(material_ + "distribution", d == M.end() ? "missing" : "must be a string");
-            return;
-        }
-        const std::string name = d->get<std::string>();
+        std::string name;
+        if (!text(M, "distribution", material_ + "distribution", name)) return;
         if (name == "phong" || name == "blinn") {
             m.distribution = name == "phong" ? Distribution::Phong : Distribution::Blinn;
             // Phong has no Fresnel factor (CONTRACT 2): f0 is no field of its.

@@ -19,3 +19,13 @@ function(expect_contains text what)
     endif()
   endforeach()
 endfunction()
+
+# Fails unless folder `dir` holds every file named after `what` (the command that should
+# have written them, named in the message).
+function(expect_files dir what)
+  foreach(f IN LISTS ARGN)
+    if(NOT EXISTS "${dir}/${f}")
+      message(FATAL_ERROR "${what} did not write ${f}")
+    endif()
+  endforeach()
+endfunction()
