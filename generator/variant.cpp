@@ -149,9 +149,13 @@ KeyRow required_key(const char* name, T Variant::*field, const T (&values)[N], D
 // The key table, in canonical-name order (which is also the enumeration order: the
 // first further key varies slowest). A new key: a field in Variant, initialised to
 // its default, and a row here; the family rows then name it where it applies.
-// verts: the templates size their per-vertex arrays by AL_MAX_VERTS: triangles,
-// quads, and the contract's maximum. Cost falls with it (fewer edges to clip and
-// integrate); the sizes between bought little and each doubled the variants.
+// verts: the templates size their per-vertex arrays by AL_MAX_VERTS: quads (triangles
+// too) and the contract's maximum. A quad's arrays save VGPRs (phong lorentz 144 -> 128,
+// 6 -> 8 waves per SIMD, navi21); the sizes between bought little and each doubled the
+// variants, and a triangle size saved at most 3% of a wave's cycles and no wave per SIMD
+// but Arvo's (12 -> 14) against verts=4 (arealight gpu-cost, 2026-12-06).
+// nodes: 24 was dominated by 16 at both precisions (phong exact: the same error, 1.15e-6
+// fp64 and 3.84e-6 fp32, at 39% and 33% more cycles a wave).
 std::vector<KeyRow> key_rows() {
     // clang-format off
     return {
@@ -168,10 +172,10 @@ std::vector<KeyRow> key_rows() {
         key("sided",              &Variant::sided,       kSided,
             mapped("AL_SIDED", {{"any", "0"}, {"one", "1"}, {"two", "2"}}),
             "any: each case's two_sided flag at run time; one, two: compiled in"),
-        key("verts",              &Variant::verts,       {3, 4, 8},      number("AL_MAX_VERTS"),
+        key("verts",              &Variant::verts,       {4, 8},         number("AL_MAX_VERTS"),
             "largest polygon compiled in (sizes the per-vertex arrays)")
             .only_where("light", {"polygon"}),
-        key("nodes",              &Variant::nodes,       {2, 3, 8, 12, 16, 24}, number("AL_NODES"),
+        key("nodes",              &Variant::nodes,       {2, 3, 8, 12, 16}, number("AL_NODES"),
             "Gauss-Legendre quadrature nodes per edge (per piece of an arc, microfacets)"),
         key("precision",          &Variant::precision,   kPrecisions,
             mapped("AL_PRECISION_FP64", {{"fp64", "1"}, {"fp32", "0"}, {"fp16", "0"}}),
@@ -226,7 +230,7 @@ std::vector<VariantFamily> family_rows() {
     return {
         // dist     method        light       keys ({} = all values)
         //   templates
-        {D::Phong, M::Exact,     L::Polygon, {{"sided"}, {"verts"}, {"nodes", {"8", "12", "16", "24"}}, {"precision", {"fp64", "fp32"}}},
+        {D::Phong, M::Exact,     L::Polygon, {{"sided"}, {"verts"}, {"nodes", {"8", "12", "16"}}, {"precision", {"fp64", "fp32"}}},
             {"dist/phong.glsl", "method/phong_edge.glsl", "method/phong_edge_rule.glsl", "method/exact_phong.glsl", "method/phong_boundary.glsl",
              "light/polygon.glsl", "light/polygon_methods.glsl"}},
         {D::Phong, M::Arvo,      L::Polygon, {{"sided"}, {"verts"}},

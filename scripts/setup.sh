@@ -1,17 +1,26 @@
 #!/usr/bin/env bash
-# Installs every Debian package arealight needs to build and test.
+# Installs the Debian packages arealight needs.
+#   bash scripts/setup.sh        everything: build, tests, sanitizers, fuzzers (scripts/test.sh)
+#   bash scripts/setup.sh main   what building arealight and running it need (scripts/main.sh):
+#                                not Catch2, clang and its sanitizer runtime, the consumer test's
+#                                Ninja or the command-line Vulkan and glslang tools, of which
+#                                clang alone brings about 250 MB of LLVM 14 beside Mesa's LLVM 15
 # Idempotent: does nothing when all packages are already present.
 set -euo pipefail
 
 PACKAGES=(
   build-essential cmake pkg-config
-  glslang-dev glslang-tools spirv-tools spirv-headers
-  libvulkan-dev mesa-vulkan-drivers vulkan-tools
-  libglm-dev libfmt-dev libcli11-dev nlohmann-json3-dev catch2
-  libboost-dev libzstd-dev libcapstone-dev libnlopt-cxx-dev libpng-dev ninja-build
-  clang libclang-rt-14-dev
+  glslang-dev spirv-tools spirv-headers
+  libvulkan-dev mesa-vulkan-drivers
+  libglm-dev libfmt-dev libcli11-dev nlohmann-json3-dev
+  libboost-dev libzstd-dev libcapstone-dev libnlopt-cxx-dev libpng-dev
   python3
 )
+case "${1:-all}" in
+  main) ;;
+  all) PACKAGES+=(glslang-tools vulkan-tools catch2 ninja-build clang libclang-rt-14-dev) ;;
+  *) echo "usage: bash scripts/setup.sh [main]" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -27,9 +27,9 @@ std::vector<std::string> lines_of(const std::string& text) {
 }  // namespace
 
 TEST_CASE("stitched GLSL of a small variant equals the reviewed golden text", "[generator]") {
-    const Variant v = parse("dist=phong,method=point,light=polygon,verts=3");
+    const Variant v = parse("dist=phong,method=point,light=polygon,verts=4");
     const std::string text = generate_source(v, Language::Glsl);
-    std::ifstream golden(AREALIGHT_TEST_DATA "/golden/phong_point_polygon_verts3.comp");
+    std::ifstream golden(AREALIGHT_TEST_DATA "/golden/phong_point_polygon_verts4.comp");
     REQUIRE(golden);
     std::stringstream expected;
     expected << golden.rdbuf();
@@ -113,7 +113,7 @@ TEST_CASE("a variant stitches the library types, common, its family's templates,
                        "templates/method/phong_boundary.glsl",
                        "templates/light/polygon.glsl", "templates/light/polygon_methods.glsl",
                        "templates/library/polygon.glsl", "templates/library/kernel.glsl"});
-    CHECK(variant_templates(parse("dist=phong,method=arvo,light=polygon,verts=3"), Language::Cpp) ==
+    CHECK(variant_templates(parse("dist=phong,method=arvo,light=polygon,verts=4"), Language::Cpp) ==
           std::vector<std::string>{"templates/library/types.glsl", "templates/common/common.glsl",
                                    "templates/dist/phong.glsl", "templates/method/phong_edge.glsl",
                                    "templates/method/arvo_phong.glsl", "templates/light/polygon.glsl",

@@ -379,8 +379,8 @@ TEST_CASE("render: a variant that does not fit a light is an error", "[render]")
     opt.width = 8;
     opt.height = 6;
     Collect c;
-    // verts=3 compiles in triangles only; light 0 is a quad.
-    auto v = parse_variant("dist=phong,method=pearson,light=polygon,verts=3", c.consumer());
+    // sided=two compiles in two-sided lights only; light 0 is one-sided.
+    auto v = parse_variant("dist=phong,method=pearson,light=polygon,sided=two,verts=4", c.consumer());
     REQUIRE(v);
     opt.variants.push_back(*v);
     EvalOptions eo;
@@ -389,7 +389,7 @@ TEST_CASE("render: a variant that does not fit a light is an error", "[render]")
     REQUIRE(ev);
     CHECK_FALSE(render(s, opt, ev.get(), c.consumer()));
     INFO(c.all());
-    CHECK(c.has("variant dist=phong,method=pearson,light=polygon,verts=3 does not apply to "
+    CHECK(c.has("variant dist=phong,method=pearson,light=polygon,sided=two,verts=4 does not apply to "
                 "light 0 (a one-sided polygon of 4 vertices)"));
 }
 

@@ -59,8 +59,8 @@ QualityData hand_table() {
         row("dist=ggx,method=point,light=polygon", 0.011, 1600, 0.5),
         row("dist=phong,method=lorentz,light=polygon", 0.008, 5900),
         row("dist=phong,method=pearson,light=polygon", 0.004, 7500),
-        // Measured on triangles only (verts=3): not comparable, never ranked.
-        row("dist=phong,method=arvo,light=polygon,verts=3", 1e-9, 100),
+        // Measured on quads only (verts=4): not comparable, never ranked.
+        row("dist=phong,method=arvo,light=polygon,verts=4", 1e-9, 100),
     };
     return q;
 }
@@ -128,7 +128,7 @@ TEST_CASE("select: sided and verts follow the scene where the family offers them
     Selected sel = select(one);
     INFO(sel.all());
     CHECK(sel.names() ==
-          std::vector<std::string>{"dist=phong,method=arvo,light=polygon,sided=one,verts=3"});
+          std::vector<std::string>{"dist=phong,method=arvo,light=polygon,sided=one,verts=4"});
 
     Scene two = scene_of({polygon(4, true), polygon(3, true)}, {phong});
     two.quality.method = "arvo";
@@ -255,14 +255,14 @@ TEST_CASE("select: when nothing meets max_error, the most accurate, with a warni
 }
 
 TEST_CASE("select: rows measured at a non-default verts or sided are not ranked") {
-    // phong arvo verts=3 claims 1e-9 at 100 instructions; a triangle scene must not take it
+    // phong arvo verts=4 claims 1e-9 at 100 instructions; a triangle scene must not take it
     // as the generic measurement.
     Scene s = scene_of({polygon(3)}, {material(Distribution::Phong, 40)});
     s.quality.max_error = 0.01;
     const Selected sel = select(s);
     INFO(sel.all());
     CHECK(sel.names() ==
-          std::vector<std::string>{"dist=phong,method=lorentz,light=polygon,sided=one,verts=3"});
+          std::vector<std::string>{"dist=phong,method=lorentz,light=polygon,sided=one,verts=4"});
 }
 
 TEST_CASE("select: the shipped measured data parses and its choices meet max_error") {

@@ -47,17 +47,17 @@ Variant parse_ok(const std::string& name) {
 TEST_CASE("canonical names list the fixed keys, then non-default keys", "[variant]") {
     Variant v;
     CHECK(canonical_name(v) == "dist=phong,method=exact,light=polygon");
-    v.nodes = 24;
+    v.nodes = 12;
     v.sided = Sided::Two;
-    CHECK(canonical_name(v) == "dist=phong,method=exact,light=polygon,sided=two,nodes=24");
-    v.verts = 3;
-    CHECK(canonical_name(v) == "dist=phong,method=exact,light=polygon,sided=two,verts=3,nodes=24");
+    CHECK(canonical_name(v) == "dist=phong,method=exact,light=polygon,sided=two,nodes=12");
+    v.verts = 4;
+    CHECK(canonical_name(v) == "dist=phong,method=exact,light=polygon,sided=two,verts=4,nodes=12");
 
     Variant point;
     point.method = Method::Point;
     point.verts = 4;
     CHECK(canonical_name(point) == "dist=phong,method=point,light=polygon,verts=4");
-    point.nodes = 24;  // not used by the point method, so not named
+    point.nodes = 12;  // not used by the point method, so not named
     CHECK(canonical_name(point) == "dist=phong,method=point,light=polygon,verts=4");
 
     // Keys in any order, defaults spelled out: the canonical form drops them.
@@ -74,12 +74,12 @@ TEST_CASE("parsing fills the named fields and defaults the rest", "[variant]") {
     CHECK(d.verts == 8);
     CHECK(d.nodes == 16);
 
-    const Variant v = parse_ok("dist=phong,method=exact,light=polygon,sided=two,verts=3,nodes=12");
+    const Variant v = parse_ok("dist=phong,method=exact,light=polygon,sided=two,verts=4,nodes=12");
     CHECK(v.dist == Distribution::Phong);
     CHECK(v.method == Method::Exact);
     CHECK(v.light == LightType::Polygon);
     CHECK(v.sided == Sided::Two);
-    CHECK(v.verts == 3);
+    CHECK(v.verts == 4);
     CHECK(v.nodes == 12);
     CHECK(v != d);
 
@@ -94,8 +94,8 @@ TEST_CASE("parsing fills the named fields and defaults the rest", "[variant]") {
 TEST_CASE("enumeration: every variant valid, unique, and round-trips", "[variant]") {
     const auto all = enumerate_variants();
     const std::size_t sided = 3;      // any, one, two
-    const std::size_t verts = 3;      // 3, 4, 8
-    const std::size_t nodes = 4;      // 8, 12, 16, 24
+    const std::size_t verts = 2;      // 4, 8
+    const std::size_t nodes = 3;      // 8, 12, 16
     const std::size_t precision = 2;  // fp64, fp32
     const std::size_t fits = 2;       // tuned, paper
     const std::size_t specular = 2;   // twoaxis, sg
@@ -140,10 +140,10 @@ TEST_CASE("enumeration: every variant valid, unique, and round-trips", "[variant
 
     // Fixed order: family first, then sided, verts, nodes, precision.
     REQUIRE(all.size() >= 3);
-    CHECK(canonical_name(all.front()) == "dist=phong,method=exact,light=polygon,verts=3,nodes=8");
+    CHECK(canonical_name(all.front()) == "dist=phong,method=exact,light=polygon,verts=4,nodes=8");
     CHECK(canonical_name(all[1]) ==
-          "dist=phong,method=exact,light=polygon,verts=3,nodes=8,precision=fp32");
-    CHECK(canonical_name(all[2]) == "dist=phong,method=exact,light=polygon,verts=3,nodes=12");
+          "dist=phong,method=exact,light=polygon,verts=4,nodes=8,precision=fp32");
+    CHECK(canonical_name(all[2]) == "dist=phong,method=exact,light=polygon,verts=4,nodes=12");
     CHECK(canonical_name(all.back()) == "dist=ggx,method=mrp,light=ellipsoid");
     CHECK(enumerate_variants() == all);
 }
@@ -152,6 +152,11 @@ TEST_CASE("validity: implemented family, keys in range, unused keys at default",
     CHECK(is_valid(Variant{}));
     Variant v;
     v.verts = 9;
+    CHECK_FALSE(is_valid(v));
+    v.verts = 3;  // triangles take verts=4
+    CHECK_FALSE(is_valid(v));
+    v = Variant{};
+    v.nodes = 24;  // dominated by 16
     CHECK_FALSE(is_valid(v));
     v = Variant{};
     v.nodes = 10;
@@ -273,11 +278,11 @@ TEST_CASE("bad variant names are rejected naming the key", "[variant]") {
                Contains("key 'sided': unknown value 'both' (expected any, one, two)"));
     CHECK(error_of("dist=phong,method=exact,light=polygon,verts=9") ==
           "variant 'dist=phong,method=exact,light=polygon,verts=9': key 'verts': value '9' is "
-          "not one of 3, 4, 8");
+          "not one of 4, 8");
     CHECK_THAT(error_of("dist=phong,method=exact,light=polygon,verts=5"),
-               Contains("key 'verts': value '5' is not one of 3, 4, 8"));
+               Contains("key 'verts': value '5' is not one of 4, 8"));
     CHECK_THAT(error_of("dist=phong,method=exact,light=polygon,verts=-4"),
-               Contains("key 'verts': value '-4' is not one of 3, 4, 8"));
+               Contains("key 'verts': value '-4' is not one of 4, 8"));
     CHECK_THAT(error_of("dist=phong,method=exact,light=polygon,fit=paper"),
                Contains("key 'fit' applies to method=lorentz, pearson, ellipsoid only"));
     CHECK_THAT(error_of("dist=phong,method=arvo,light=polygon,specular=sg"),
@@ -286,7 +291,7 @@ TEST_CASE("bad variant names are rejected naming the key", "[variant]") {
     CHECK_THAT(error_of("dist=phong,method=pearson,light=polygon,fit=best"),
                Contains("key 'fit': unknown value 'best' (expected tuned, paper)"));
     CHECK_THAT(error_of("dist=phong,method=exact,light=polygon,nodes=10"),
-               Contains("key 'nodes': value '10' is not one of 2, 3, 8, 12, 16, 24"));
+               Contains("key 'nodes': value '10' is not one of 2, 3, 8, 12, 16"));
     CHECK_THAT(error_of("method=exact,light=polygon"), Contains("key 'dist' is required"));
     CHECK_THAT(error_of("dist=phong,light=polygon"), Contains("key 'method' is required"));
     CHECK_THAT(error_of("dist=phong,method=exact"), Contains("key 'light' is required"));
@@ -376,12 +381,12 @@ TEST_CASE("pattern matching compares effective values", "[variant]") {
     for (const auto& e : enumerate_variants()) {
         all += variant_matches(e, "");
         exact += variant_matches(e, "method=exact,sided=two");
-        point += variant_matches(e, "method=point,verts=3");
+        point += variant_matches(e, "method=point,verts=4");
     }
-    INFO("all " << all << ", exact sided=two " << exact << ", point verts=3 " << point);
+    INFO("all " << all << ", exact sided=two " << exact << ", point verts=4 " << point);
     CHECK(all == enumerate_variants().size());
-    CHECK(exact == 3 * 4 * 2);  // verts 3, 4, 8; nodes; precision
-    CHECK(point == 3);
+    CHECK(exact == 2 * 3 * 2);  // verts 4, 8; nodes 8, 12, 16; precision
+    CHECK(point == 3);          // sided any, one, two
 }
 
 // The tables the functions above loop over (variant_keys, variant_families): each

@@ -72,7 +72,7 @@ struct Variant {
     Method method = Method::Exact;
     LightType light = LightType::Polygon;
     Sided sided = Sided::Any;
-    int verts = 8;   // polygon: largest polygon compiled in: 3, 4 or 8
+    int verts = 8;   // polygon: largest polygon compiled in: 4 or 8
     int nodes = 16;  // method=exact: Gauss-Legendre nodes per edge (per arc piece, microfacets)
     Precision precision = Precision::Fp64;          // method=exact: fp64 or fp32
     Fit fit = Fit::Tuned;                           // peak methods
