@@ -18,6 +18,7 @@ MIRROR_FLAGS=-O0 BUILD_TESTS=OFF bash scripts/build.sh arealight
 # committed it); a module this machine builds differently is compiled here.
 mkdir -p out/gpu-cache
 cp -n data/gpu-cache/*.json out/gpu-cache/ 2>/dev/null || true
+seeded=$(ls out/gpu-cache | wc -l)
 mkdir -p out
 al=build/arealight
 variant="dist=phong,method=exact,light=polygon"
@@ -31,6 +32,14 @@ done
 $al report --cases examples/cases.json --variants dist=phong,light=polygon,verts=8,sided=any \
   --gpu-cache out/gpu-cache --out out/report
 DOCS=out/render bash scripts/render_comparison.sh
+# A module not in data/gpu-cache cost this job seconds to a minute of ACO each (a stale cache
+# took the report from 62 to 143 s): say how to refresh it.
+computed=$(( $(ls out/gpu-cache | wc -l) - seeded ))
+if [ "$computed" -gt 0 ]; then
+  echo "main: $computed GPU-cost entries were not in data/gpu-cache and were computed here; to"
+  echo "main: refresh it: rm -r out/gpu-cache data/gpu-cache/*.json, run this job again, then"
+  echo "main: cp out/gpu-cache/*.json data/gpu-cache/"
+fi
 echo "main: the report is out/report/report.md (report.svg: error against GPU cost), the"
 echo "main: renders and their error images out/render/ (render.md), the kernels out/*.comp"
 
