@@ -19,9 +19,10 @@
 // (tests/test_peak_microfacet.cpp checks it by quadrature of al_mix_ndf).
 //
 // GPU cost (navi21, `arealight gpu-cost`, the validation kernel, polygon, against the
-// point light's 498-573; with AL_FAST_ARC, common/common.glsl): lorentz 16 945 / 16 954 /
-// 24 555 (blinn / beckmann / ggx; 30-49x), pearson 29 346 / 30 325 (beckmann / ggx;
-// 53-61x), ellipsoid 32 645 / 32 627 / 46 530 (57-93x).
+// point light's 498-573; with AL_FAST_ARC, common/common.glsl, the one-lobe loop unrolled
+// and each arc's shared terms once, 2026-12-06): lorentz 16 604 / 16 610 / 23 223 (blinn /
+// beckmann / ggx; 29-47x), pearson 19 486 / 19 491 / 28 986 (34-58x), ellipsoid 21 485 /
+// 21 490 / 45 855 (38-92x).
 //
 // The paper's formulas, checked numerically (the copy we read garbles some):
 // - eq. 23: int D_Blinn dh = (N+2)/(2 pi) int (n.h)^N dh = (N+2)/(N+1) mu_N. As printed.
@@ -316,14 +317,19 @@ rvec3 al_pmf_half(AlMoments M, rvec3 w) {
     return h;
 }
 
-// The far/near choice of method/phong_edge.glsl's al_edge_frame for exponent N.
-bool al_pmf_far(AlEdgeFrame E, real N) {
+// log of x's largest value on the arc of E (method/phong_edge.glsl's al_edge_frame), for
+// al_pmf_far: once per arc, not per lobe.
+real al_pmf_log_x_max(AlEdgeFrame E) {
+    real x_max = E.ag <= AL_R(0.0) && E.bg >= AL_R(0.0) ? E.c : max(E.xa, E.xb);
+    return al_log(max(x_max, AL_R(1e-30)));
+}
+
+// The far/near choice of al_edge_frame for exponent N (log_x_max: al_pmf_log_x_max).
+bool al_pmf_far(AlEdgeFrame E, real log_x_max, real N) {
 #ifdef AL_FIT_PAPER
     return false;  // the paper fits the near form everywhere
 #else
-    real x_max = E.ag <= AL_R(0.0) && E.bg >= AL_R(0.0) ? E.c : max(E.xa, E.xb);
-    return N * E.s * E.s > AL_R(4.0) ||
-           (N + AL_R(1.0)) * al_log(max(x_max, AL_R(1e-30))) < AL_PEAK_LOG_FAR;
+    return N * E.s * E.s > AL_R(4.0) || (N + AL_R(1.0)) * log_x_max < AL_PEAK_LOG_FAR;
 #endif
 }
 
@@ -386,16 +392,18 @@ void al_pmf_h_arc(AL_INOUT(AlMoments) M, rvec3 p, rvec3 q, real sweep, rvec3 h_m
     }
     real ta = al_atan2(E.ag, E.af);
     real dtau = max(al_atan2(E.bg, E.bf) - ta, AL_R(0.0));
+    AlArcShared S = al_arc_shared(E, ta);
+    real log_x_max = al_pmf_log_x_max(E);
 #ifndef AL_FIT_PAPER
     // Sliver offset d_mid / (L/2)^2 (inward positive: the true region is smaller).
     real bend = degenerate ? AL_R(0.0) : AL_R(4.0) * dot(m, h_mid) / max(dtau * dtau, AL_R(1e-30));
-    real lc = AL_R(0.5) * al_log1p(-E.s * E.s);
+    real lc = S.lc;
     M.omega_h -= bend * dtau * dtau * dtau / AL_R(6.0);
 #endif
     AL_PMF_LOBE_LOOP for (int j = 0; j < AL_PMF_LOBES; ++j) {
         real N = M.mix.N[j];
-        bool far_edge = degenerate || al_pmf_far(E, N);
-        real t1 = degenerate ? AL_R(0.0) : al_peak_edge_term(E, dtau, N + AL_R(1.0), far_edge);
+        bool far_edge = degenerate || al_pmf_far(E, log_x_max, N);
+        real t1 = degenerate ? AL_R(0.0) : al_peak_edge_term(E, S, dtau, N + AL_R(1.0), far_edge);
         M.sums[j] += (far_edge ? AL_R(1.0) : -AL_R(1.0)) * E.rm * t1;
         if (far_edge) {
             M.sweep_far[j] += sweep;

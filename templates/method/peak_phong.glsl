@@ -58,9 +58,9 @@
 // b = a (2.1 + 1.28 x_w / x_w(0)) (ellipsoid), tail point eq. 14, alpha clamped.
 // Measured error: see docs/methods.md (arealight report). GPU cost (navi21, `arealight
 // gpu-cost`, the validation kernel, polygon, against the point light's 457; with
-// AL_FAST_ARC, common/common.glsl): lorentz 9 509 (20.8x), fit=paper 5 717 (12.5x);
-// pearson 10 952 (24x); ellipsoid 16 815 (36.8x): one edge loop, counted by ACO as 8
-// iterations of ~1 100 cycles each.
+// AL_FAST_ARC, common/common.glsl; 2026-12-06): lorentz 8 014 (17.5x), fit=paper 5 323
+// (11.6x); pearson 9 454 (20.7x), fit=paper 7 202 (15.8x); ellipsoid 10 454 (22.9x),
+// fit=paper 8 732 (19.1x): one edge loop, counted by ACO as 8 iterations of ~1 000 cycles.
 
 #define AL_PEAK_LOG_FAR AL_R(-2.3)
 // Integral over the arc of the ellipse's Q = a cos^2 / (sin^2 + a cos^2) =
@@ -147,10 +147,10 @@ real al_blend_alpha(real q_wide, real q_narrow, real yt) {
     return clamp((q_narrow - yt) / den, AL_R(0.0), AL_R(1.0));
 }
 
-// Integral over [tau_a, tau_b] (tau = atan(g, f) of each end, dtau = tau_b - tau_a
-// >= 0) of the fit of g through F. Finite for any input; a flat g integrates as
+// Integral over [tau_a, tau_b] (tau = atan(g, f) of each end, ta = tau_a, dtau = tau_b -
+// tau_a >= 0) of the fit of g through F. Finite for any input; a flat g integrates as
 // g_min dtau.
-real al_peak_integral(real ag, real af, real bg, real bf, real dtau, AlPeakFit F) {
+real al_peak_integral(real ag, real af, real bg, real bf, real ta, real dtau, AlPeakFit F) {
     real span = F.gmax - F.gmin;
     if (!(abs(span) > AL_R(1e-7) * max(abs(F.gmax), abs(F.gmin)))) return F.gmin * dtau;
     real y = clamp((F.gw - F.gmin) / span, AL_R(1e-6), AL_R(0.999999));
@@ -161,7 +161,6 @@ real al_peak_integral(real ag, real af, real bg, real bf, real dtau, AlPeakFit F
     real tw = al_atan2(sqrt(F.tw2), AL_R(1.0));
     const real quarter_pi2 = AL_R(2.46740110027233965471);  // (pi/2)^2
     real a = max((AL_R(1.0) - tw * tw / quarter_pi2 - y) / (y * tw * tw), AL_R(0.05));
-    real ta = al_atan2(ag, af);
     real integral_q = al_lorentz_q_integral(a, ta, dtau);
 #ifdef AL_METHOD_PEARSON
 #ifdef AL_FIT_PAPER
@@ -236,6 +235,33 @@ bool al_arc_near_end(AlEdgeFrame E, AL_INOUT(real) tan1, AL_INOUT(real) x1) {
     return true;
 }
 
+// What the fits of one arc share whatever their exponent k, computed once per arc: the
+// microfacet methods fit each lobe's exponent in a loop nested in the polygon's edge loop
+// (method/peak_microfacet.glsl), out of which the GPU compilers do not hoist it, and
+// which ACO's cost model counts 64 times per trip of the edge loop (ggx pearson 30 325 ->
+// 28 986 cycles a wave, navi21; Phong's two exponents, lorentz 8 374 -> 8 014).
+struct AlArcShared {
+    real s2, lc;   // s^2 and log c
+    real ta;       // tau_a
+    bool beside;   // the foot lies outside the arc (al_arc_near_end); then, at the nearer end:
+    real tan1;     // tan(tau_1)
+    real x1, lx1;  // x and log x
+    real omx2;     // 1 - x^2 = s^2 + c^2 sin^2(tau_1)
+};
+AlArcShared al_arc_shared(AlEdgeFrame E, real ta) {
+    AlArcShared S;
+    S.s2 = E.s * E.s;
+    S.lc = AL_R(0.5) * al_log1p(-S.s2);
+    S.ta = ta;
+    S.tan1 = AL_R(0.0);
+    S.x1 = AL_R(0.0);
+    S.beside = al_arc_near_end(E, S.tan1, S.x1);
+    real sin2 = S.tan1 * S.tan1 / (AL_R(1.0) + S.tan1 * S.tan1);
+    S.omx2 = S.s2 + (AL_R(1.0) - S.s2) * sin2;
+    S.lx1 = al_log(max(S.x1, AL_R(1e-30)));
+    return S;
+}
+
 // The integrand at tan^2(tau) = t2, from s^2 and log c: the near form
 // (1 - x^k) / (1 - x^2), or the far form x^k / (1 - x^2). 1 - x^2 =
 // (s^2 + t2) / (1 + t2) without cancellation, log x = log c - log1p(t2) / 2.
@@ -246,10 +272,10 @@ real al_peak_sample(real s2, real lc, real k, real t2, bool far_edge) {
 }
 
 // Fitted integral of the near-form integrand (1 - x^k) / (1 - x^2) (far = false)
-// or of x^k / (1 - x^2) (far = true) over the arc of E.
-real al_peak_edge_term(AlEdgeFrame E, real dtau, real k, bool far_edge) {
-    real s2 = E.s * E.s;
-    real lc = AL_R(0.5) * al_log1p(-s2);  // log c
+// or of x^k / (1 - x^2) (far = true) over the arc of E (S: al_arc_shared of it).
+real al_peak_edge_term(AlEdgeFrame E, AlArcShared S, real dtau, real k, bool far_edge) {
+    real s2 = S.s2;
+    real lc = S.lc;
     AlPeakFit F;
 #ifdef AL_FIT_PAPER
     real xw = al_paper_half_width(E.c, k);
@@ -266,17 +292,14 @@ real al_peak_edge_term(AlEdgeFrame E, real dtau, real k, bool far_edge) {
     if (far_edge) {
         F.gmax = s2 > AL_R(0.0) ? al_exp(k * lc) / s2 : AL_R(0.0);
         F.gmin = AL_R(0.0);
-        real fit = al_peak_integral(E.ag, E.af, E.bg, E.bf, dtau, F);
-        real tan1, x1;
-        if (!al_arc_near_end(E, tan1, x1)) return fit;
-        // g = x^k / (1 - x^2), 1 - x^2 = s^2 + c^2 sin^2; -d log g = k tan + 2 x^2 tan / (1 - x^2).
-        real sin2 = tan1 * tan1 / (AL_R(1.0) + tan1 * tan1);
-        real omx2 = s2 + (AL_R(1.0) - s2) * sin2;
-        real g1 = al_exp(k * al_log(max(x1, AL_R(1e-30)))) / omx2;
-        real lambda = k * tan1 + AL_R(2.0) * x1 * x1 * tan1 / omx2;
+        real fit = al_peak_integral(E.ag, E.af, E.bg, E.bf, S.ta, dtau, F);
+        if (!S.beside) return fit;
+        // g = x^k / (1 - x^2); -d log g = k tan + 2 x^2 tan / (1 - x^2).
+        real g1 = al_exp(k * S.lx1) / S.omx2;
+        real lambda = k * S.tan1 + AL_R(2.0) * S.x1 * S.x1 * S.tan1 / S.omx2;
         return min(fit, al_tail_bound(g1, max(lambda, AL_R(0.0)), dtau));
     }
     F.gmax = s2 > AL_R(1e-30) ? -al_expm1(k * lc) / s2 : AL_R(0.5) * k;
     F.gmin = AL_R(1.0);
-    return al_peak_integral(E.ag, E.af, E.bg, E.bf, dtau, F);
+    return al_peak_integral(E.ag, E.af, E.bg, E.bf, S.ta, dtau, F);
 }
