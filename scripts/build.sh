@@ -5,11 +5,12 @@
 #   MIRROR_FLAGS=-O0 bash scripts/build.sh arealight   # the CPU mirror unoptimised (main.sh)
 #   BUILD_TESTS=OFF bash scripts/build.sh arealight    # no test suite: Catch2 not needed (main.sh)
 #   TEST_FLAGS=-O0 bash scripts/build.sh               # the suite's own files unoptimised (test.sh)
-# MIRROR_FLAGS, BUILD_TESTS and TEST_FLAGS are passed at every configure, so a build without
-# them is the default again.
+#   BUILD_TYPE=None bash scripts/build.sh arealight    # no optimisation at all (main.sh)
+# BUILD_TYPE (Release by default), MIRROR_FLAGS, BUILD_TESTS and TEST_FLAGS are passed at every
+# configure, so a build without them is the default again.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DAREALIGHT_MIRROR_FLAGS="${MIRROR_FLAGS:-}" \
+cmake -S . -B build -DCMAKE_BUILD_TYPE="${BUILD_TYPE:-Release}" -DAREALIGHT_MIRROR_FLAGS="${MIRROR_FLAGS:-}" \
   -DAREALIGHT_BUILD_TESTS="${BUILD_TESTS:-ON}" -DAREALIGHT_TEST_FLAGS="${TEST_FLAGS:-}" >/dev/null
 targets=()
 for t in "$@"; do targets+=(--target "$t"); done
