@@ -85,9 +85,7 @@ int main(int argc, char** argv) {
                 "    E.rm = s;\n    E.s = s;\n    E.c = sqrt(1.0f - s * s);\n"
                 "    E.ag = ag;\n    E.af = af;\n    E.bg = bg;\n    E.bf = bf;\n"
                 "    E.xa = E.c * af;\n    E.xb = E.c * bf;\n    E.far_edge = far_edge;\n"
-                "    float ta = al_atan2(ag, af);\n"
-                "    float dtau = max(al_atan2(bg, bf) - ta, 0.0f);\n"
-                "    return al_peak_edge_term(E, al_arc_shared(E, ta), dtau, k, far_edge);\n"
+                "    return al_peak_edge_term(E, al_arc_shared(E), k, far_edge);\n"
                 "}}\n"), variants[i]);
             probe_decls += fmt::format(
                 "namespace al_mirror_{} {{ float edge_probe(float, float, float, float, float, "

@@ -33,12 +33,10 @@ AlLobeEdge al_lobe_edge(rvec3 a, rvec3 b, rvec3 m, rvec3 r, rvec3 n, real N) {
     AlEdgeFrame E = al_edge_frame(a, b, m, r, N, AL_PEAK_LOG_FAR);
     E.far_edge = false;  // the paper fits the near form everywhere
 #endif
-    real ta = al_atan2(E.ag, E.af);
-    real dtau = max(al_atan2(E.bg, E.bf) - ta, AL_R(0.0));
     bool far_edge = E.far_edge;
-    AlArcShared S = al_arc_shared(E, ta);
-    real t1 = al_peak_edge_term(E, S, dtau, N + AL_R(1.0), far_edge);
-    real t0 = al_peak_edge_term(E, S, dtau, N, far_edge);
+    AlArcShared S = al_arc_shared(E);
+    real t1 = al_peak_edge_term(E, S, N + AL_R(1.0), far_edge);
+    real t0 = al_peak_edge_term(E, S, N, far_edge);
 #ifdef AL_FIT_PAPER
     // x^N: max c^N, min 0, exact half width cos^2 tau_w = 2^(-2/N), where g = c^N / 2;
     // the tail sample at tan(tau_t) = 2 tan(tau_w).
@@ -52,7 +50,7 @@ AlLobeEdge al_lobe_edge(rvec3 a, rvec3 b, rvec3 m, rvec3 r, rvec3 n, real N) {
     F.gw = AL_R(0.5) * cn;
     F.tt2 = AL_R(4.0) * F.tw2;
     F.gt = al_exp(N * (lc - AL_R(0.5) * al_log1p(F.tt2)));
-    real tz = al_peak_integral(E.ag, E.af, E.bg, E.bf, ta, dtau, F);
+    real tz = al_peak_integral(E.ag, E.af, E.bg, E.bf, S.ta, S.dtau, F);
 #else
     real tz = rule.z;
 #endif

@@ -390,11 +390,10 @@ void al_pmf_h_arc(AL_INOUT(AlMoments) M, rvec3 p, rvec3 q, real sweep, rvec3 h_m
         M.c_close = cc;
         M.h_close = close;
     }
-    real ta = al_atan2(E.ag, E.af);
-    real dtau = max(al_atan2(E.bg, E.bf) - ta, AL_R(0.0));
-    AlArcShared S = al_arc_shared(E, ta);
+    AlArcShared S = al_arc_shared(E);
     real log_x_max = al_pmf_log_x_max(E);
 #ifndef AL_FIT_PAPER
+    real ta = S.ta, dtau = S.dtau;
     // Sliver offset d_mid / (L/2)^2 (inward positive: the true region is smaller).
     real bend = degenerate ? AL_R(0.0) : AL_R(4.0) * dot(m, h_mid) / max(dtau * dtau, AL_R(1e-30));
     real lc = S.lc;
@@ -403,7 +402,7 @@ void al_pmf_h_arc(AL_INOUT(AlMoments) M, rvec3 p, rvec3 q, real sweep, rvec3 h_m
     AL_PMF_LOBE_LOOP for (int j = 0; j < AL_PMF_LOBES; ++j) {
         real N = M.mix.N[j];
         bool far_edge = degenerate || al_pmf_far(E, log_x_max, N);
-        real t1 = degenerate ? AL_R(0.0) : al_peak_edge_term(E, S, dtau, N + AL_R(1.0), far_edge);
+        real t1 = degenerate ? AL_R(0.0) : al_peak_edge_term(E, S, N + AL_R(1.0), far_edge);
         M.sums[j] += (far_edge ? AL_R(1.0) : -AL_R(1.0)) * E.rm * t1;
         if (far_edge) {
             M.sweep_far[j] += sweep;

@@ -59,7 +59,7 @@
 // Measured error: see docs/methods.md (arealight report). GPU cost (navi21, `arealight
 // gpu-cost`, the validation kernel, polygon, against the point light's 457; with
 // AL_FAST_ARC, common/common.glsl; 2026-12-06): lorentz 8 014 (17.5x), fit=paper 5 323
-// (11.6x); pearson 9 454 (20.7x), fit=paper 7 202 (15.8x); ellipsoid 10 454 (22.9x),
+// (11.6x); pearson 9 466 (20.7x), fit=paper 7 202 (15.8x); ellipsoid 10 454 (22.9x),
 // fit=paper 8 732 (19.1x): one edge loop, counted by ACO as 8 iterations of ~1 000 cycles.
 
 #define AL_PEAK_LOG_FAR AL_R(-2.3)
@@ -242,17 +242,18 @@ bool al_arc_near_end(AlEdgeFrame E, AL_INOUT(real) tan1, AL_INOUT(real) x1) {
 // 28 986 cycles a wave, navi21; Phong's two exponents, lorentz 8 374 -> 8 014).
 struct AlArcShared {
     real s2, lc;   // s^2 and log c
-    real ta;       // tau_a
+    real ta, dtau; // tau_a and tau_b - tau_a >= 0
     bool beside;   // the foot lies outside the arc (al_arc_near_end); then, at the nearer end:
     real tan1;     // tan(tau_1)
     real x1, lx1;  // x and log x
     real omx2;     // 1 - x^2 = s^2 + c^2 sin^2(tau_1)
 };
-AlArcShared al_arc_shared(AlEdgeFrame E, real ta) {
+AlArcShared al_arc_shared(AlEdgeFrame E) {
     AlArcShared S;
     S.s2 = E.s * E.s;
     S.lc = AL_R(0.5) * al_log1p(-S.s2);
-    S.ta = ta;
+    S.ta = al_atan2(E.ag, E.af);
+    S.dtau = max(al_atan2(E.bg, E.bf) - S.ta, AL_R(0.0));
     S.tan1 = AL_R(0.0);
     S.x1 = AL_R(0.0);
     S.beside = al_arc_near_end(E, S.tan1, S.x1);
@@ -273,9 +274,10 @@ real al_peak_sample(real s2, real lc, real k, real t2, bool far_edge) {
 
 // Fitted integral of the near-form integrand (1 - x^k) / (1 - x^2) (far = false)
 // or of x^k / (1 - x^2) (far = true) over the arc of E (S: al_arc_shared of it).
-real al_peak_edge_term(AlEdgeFrame E, AlArcShared S, real dtau, real k, bool far_edge) {
+real al_peak_edge_term(AlEdgeFrame E, AlArcShared S, real k, bool far_edge) {
     real s2 = S.s2;
     real lc = S.lc;
+    real dtau = S.dtau;
     AlPeakFit F;
 #ifdef AL_FIT_PAPER
     real xw = al_paper_half_width(E.c, k);
