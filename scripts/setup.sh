@@ -3,14 +3,16 @@
 #   bash scripts/setup.sh        everything: build, tests, sanitizers, fuzzers (scripts/test.sh)
 #   bash scripts/setup.sh main   what building arealight and running it need (scripts/main.sh):
 #                                not Catch2, clang and its sanitizer runtime, the consumer test's
-#                                Ninja or the command-line Vulkan and glslang tools, of which
-#                                clang alone brings about 250 MB of LLVM 14 beside Mesa's LLVM 15
+#                                Ninja or vulkan-tools, of which clang alone brings about 250 MB
+#                                of LLVM 14 beside Mesa's LLVM 15
 # Idempotent: does nothing when all packages are already present.
 set -euo pipefail
 
 PACKAGES=(
   build-essential cmake pkg-config
-  glslang-dev spirv-tools spirv-headers
+  # glslang-tools too: Debian's glslang-dev CMake package refers to /usr/bin/glslangValidator
+  # and find_package(glslang) fails without it (seen on a debootstrapped bookworm).
+  glslang-dev glslang-tools spirv-tools spirv-headers
   libvulkan-dev mesa-vulkan-drivers
   libglm-dev libfmt-dev libcli11-dev nlohmann-json3-dev
   libboost-dev libzstd-dev libcapstone-dev libnlopt-cxx-dev libpng-dev
@@ -18,7 +20,7 @@ PACKAGES=(
 )
 case "${1:-all}" in
   main) ;;
-  all) PACKAGES+=(glslang-tools vulkan-tools catch2 ninja-build clang libclang-rt-14-dev) ;;
+  all) PACKAGES+=(vulkan-tools catch2 ninja-build clang libclang-rt-14-dev) ;;
   *) echo "usage: bash scripts/setup.sh [main]" >&2; exit 2 ;;
 esac
 
