@@ -155,7 +155,10 @@ KeyRow required_key(const char* name, T Variant::*field, const T (&values)[N], D
 // variants, and a triangle size saved at most 3% of a wave's cycles and no wave per SIMD
 // but Arvo's (12 -> 14) against verts=4 (arealight gpu-cost, 2026-12-06).
 // nodes: 24 was dominated by 16 at both precisions (phong exact: the same error, 1.15e-6
-// fp64 and 3.84e-6 fp32, at 39% and 33% more cycles a wave).
+// fp64 and 3.84e-6 fp32, at 39% and 33% more cycles a wave). Phong exact: 12 gave way to 6
+// (12: 3.9e-6 fp32, 8: 5.3e-6, at 24% more cycles): nodes=6 fp32 keeps specular relL2 within
+// 1e-4 on the typical, horizon, glossy and degenerate sets but 5.6e-3 on stress (8: 5.9e-4)
+// and one large glossy quad 5.8% off (8: 0.09%), at 6 417 cycles a wave against 7 311.
 std::vector<KeyRow> key_rows() {
     // clang-format off
     return {
@@ -175,7 +178,7 @@ std::vector<KeyRow> key_rows() {
         key("verts",              &Variant::verts,       {4, 8},         number("AL_MAX_VERTS"),
             "largest polygon compiled in (sizes the per-vertex arrays)")
             .only_where("light", {"polygon"}),
-        key("nodes",              &Variant::nodes,       {2, 3, 8, 12, 16}, number("AL_NODES"),
+        key("nodes",              &Variant::nodes,       {2, 3, 6, 8, 16}, number("AL_NODES"),
             "Gauss-Legendre quadrature nodes per edge (per piece of an arc, microfacets)"),
         key("precision",          &Variant::precision,   kPrecisions,
             mapped("AL_PRECISION_FP64", {{"fp64", "1"}, {"fp32", "0"}, {"fp16", "0"}}),
@@ -230,7 +233,7 @@ std::vector<VariantFamily> family_rows() {
     return {
         // dist     method        light       keys ({} = all values)
         //   templates
-        {D::Phong, M::Exact,     L::Polygon, {{"sided"}, {"verts"}, {"nodes", {"8", "12", "16"}}, {"precision", {"fp64", "fp32"}}},
+        {D::Phong, M::Exact,     L::Polygon, {{"sided"}, {"verts"}, {"nodes", {"6", "8", "16"}}, {"precision", {"fp64", "fp32"}}},
             {"dist/phong.glsl", "method/phong_edge.glsl", "method/phong_edge_rule.glsl", "method/exact_phong.glsl", "method/phong_boundary.glsl",
              "light/polygon.glsl", "light/polygon_methods.glsl"}},
         {D::Phong, M::Arvo,      L::Polygon, {{"sided"}, {"verts"}},

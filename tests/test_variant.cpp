@@ -49,9 +49,9 @@ TEST_CASE("canonical names list the fixed keys, then non-default keys", "[varian
     CHECK(canonical_name(v) == "dist=phong,method=exact,light=polygon");
     v.nodes = 12;
     v.sided = Sided::Two;
-    CHECK(canonical_name(v) == "dist=phong,method=exact,light=polygon,sided=two,nodes=12");
+    CHECK(canonical_name(v) == "dist=phong,method=exact,light=polygon,sided=two,nodes=6");
     v.verts = 4;
-    CHECK(canonical_name(v) == "dist=phong,method=exact,light=polygon,sided=two,verts=4,nodes=12");
+    CHECK(canonical_name(v) == "dist=phong,method=exact,light=polygon,sided=two,verts=4,nodes=6");
 
     Variant point;
     point.method = Method::Point;
@@ -74,7 +74,7 @@ TEST_CASE("parsing fills the named fields and defaults the rest", "[variant]") {
     CHECK(d.verts == 8);
     CHECK(d.nodes == 16);
 
-    const Variant v = parse_ok("dist=phong,method=exact,light=polygon,sided=two,verts=4,nodes=12");
+    const Variant v = parse_ok("dist=phong,method=exact,light=polygon,sided=two,verts=4,nodes=6");
     CHECK(v.dist == Distribution::Phong);
     CHECK(v.method == Method::Exact);
     CHECK(v.light == LightType::Polygon);
@@ -95,7 +95,7 @@ TEST_CASE("enumeration: every variant valid, unique, and round-trips", "[variant
     const auto all = enumerate_variants();
     const std::size_t sided = 3;      // any, one, two
     const std::size_t verts = 2;      // 4, 8
-    const std::size_t nodes = 3;      // 8, 12, 16
+    const std::size_t nodes = 3;      // 6, 8, 16
     const std::size_t precision = 2;  // fp64, fp32
     const std::size_t fits = 2;       // tuned, paper
     const std::size_t specular = 2;   // twoaxis, sg
@@ -140,10 +140,10 @@ TEST_CASE("enumeration: every variant valid, unique, and round-trips", "[variant
 
     // Fixed order: family first, then sided, verts, nodes, precision.
     REQUIRE(all.size() >= 3);
-    CHECK(canonical_name(all.front()) == "dist=phong,method=exact,light=polygon,verts=4,nodes=8");
+    CHECK(canonical_name(all.front()) == "dist=phong,method=exact,light=polygon,verts=4,nodes=6");
     CHECK(canonical_name(all[1]) ==
-          "dist=phong,method=exact,light=polygon,verts=4,nodes=8,precision=fp32");
-    CHECK(canonical_name(all[2]) == "dist=phong,method=exact,light=polygon,verts=4,nodes=12");
+          "dist=phong,method=exact,light=polygon,verts=4,nodes=6,precision=fp32");
+    CHECK(canonical_name(all[2]) == "dist=phong,method=exact,light=polygon,verts=4,nodes=8");
     CHECK(canonical_name(all.back()) == "dist=ggx,method=mrp,light=ellipsoid");
     CHECK(enumerate_variants() == all);
 }
@@ -291,7 +291,7 @@ TEST_CASE("bad variant names are rejected naming the key", "[variant]") {
     CHECK_THAT(error_of("dist=phong,method=pearson,light=polygon,fit=best"),
                Contains("key 'fit': unknown value 'best' (expected tuned, paper)"));
     CHECK_THAT(error_of("dist=phong,method=exact,light=polygon,nodes=10"),
-               Contains("key 'nodes': value '10' is not one of 2, 3, 8, 12, 16"));
+               Contains("key 'nodes': value '10' is not one of 2, 3, 6, 8, 16"));
     CHECK_THAT(error_of("method=exact,light=polygon"), Contains("key 'dist' is required"));
     CHECK_THAT(error_of("dist=phong,light=polygon"), Contains("key 'method' is required"));
     CHECK_THAT(error_of("dist=phong,method=exact"), Contains("key 'light' is required"));
@@ -331,10 +331,10 @@ TEST_CASE("malformed variant names are rejected", "[variant]") {
 
 TEST_CASE("defines name the chosen values and only the keys that apply", "[variant]") {
     const Variant exact =
-        parse_ok("dist=phong,method=exact,light=polygon,sided=one,verts=4,nodes=12");
+        parse_ok("dist=phong,method=exact,light=polygon,sided=one,verts=4,nodes=6");
     const Defines want_exact = {{"AL_DIST_PHONG", "1"},    {"AL_METHOD_EXACT", "1"},
                                 {"AL_LIGHT_POLYGON", "1"}, {"AL_SIDED", "1"},
-                                {"AL_MAX_VERTS", "4"},     {"AL_NODES", "12"},
+                                {"AL_MAX_VERTS", "4"},     {"AL_NODES", "6"},
                                 {"AL_PRECISION_FP64", "1"}};
     INFO("exact: " << show(variant_defines(exact)));
     CHECK(variant_defines(exact) == want_exact);
@@ -353,11 +353,11 @@ TEST_CASE("defines name the chosen values and only the keys that apply", "[varia
 }
 
 TEST_CASE("pattern matching compares effective values", "[variant]") {
-    const Variant v = parse_ok("dist=phong,method=exact,light=polygon,sided=one,verts=4,nodes=12");
+    const Variant v = parse_ok("dist=phong,method=exact,light=polygon,sided=one,verts=4,nodes=6");
     CHECK(variant_matches(v, ""));
     CHECK(variant_matches(v, "dist=phong"));
     CHECK(variant_matches(v, "dist=phong,light=polygon"));
-    CHECK(variant_matches(v, "nodes=12,verts=4,sided=one"));
+    CHECK(variant_matches(v, "nodes=6,verts=4,sided=one"));
     CHECK_FALSE(variant_matches(v, "nodes=16"));
     CHECK_FALSE(variant_matches(v, "method=point"));
     CHECK_FALSE(variant_matches(v, "dist=phong,method=point"));
@@ -385,7 +385,7 @@ TEST_CASE("pattern matching compares effective values", "[variant]") {
     }
     INFO("all " << all << ", exact sided=two " << exact << ", point verts=4 " << point);
     CHECK(all == enumerate_variants().size());
-    CHECK(exact == 2 * 3 * 2);  // verts 4, 8; nodes 8, 12, 16; precision
+    CHECK(exact == 2 * 3 * 2);  // verts 4, 8; nodes 6, 8, 16; precision
     CHECK(point == 3);          // sided any, one, two
 }
 
