@@ -158,7 +158,7 @@ KeyRow required_key(const char* name, T Variant::*field, const T (&values)[N], D
 // fp64 and 3.84e-6 fp32, at 39% and 33% more cycles a wave). Phong exact: 12 gave way to 6
 // (12: 3.9e-6 fp32, 8: 5.3e-6, at 24% more cycles): nodes=6 fp32 keeps specular relL2 within
 // 1e-4 on the typical, horizon, glossy and degenerate sets but 5.6e-3 on stress (8: 5.9e-4)
-// and one large glossy quad 5.8% off (8: 0.09%), at 6 417 cycles a wave against 7 311.
+// and one large glossy quad 5.8% off (8: 0.09%), at 6 454 cycles a wave against 7 348.
 std::vector<KeyRow> key_rows() {
     // clang-format off
     return {

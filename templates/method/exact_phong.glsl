@@ -29,9 +29,9 @@
 // uploaded case. precision=fp32: max 1.7e-5 (horizon), because a small result is a
 // sum of O(1) boundary terms and fp32 holds them to ~6e-8 absolute.
 // Cost: O(AL_NODES) per edge, independent of N. GPU cost (navi21, `arealight gpu-cost`,
-// the validation kernel, polygon): fp64 default 363 644 (796x the point light's 457,
-// 253 VGPRs: fp64 runs at 1/16 rate); precision=fp32 10 887 (23.8x); nodes=8 fp32 7 311
-// (16x; 2 231 instructions, 104 VGPRs), nodes=6 fp32 6 417 (14x; specular relL2 within 1e-4
+// the validation kernel, polygon): fp64 default 364 263 (797x the point light's 457,
+// 253 VGPRs: fp64 runs at 1/16 rate); precision=fp32 10 924 (23.9x); nodes=8 fp32 7 348
+// (16.1x; 2 223 instructions, 104 VGPRs), nodes=6 fp32 6 454 (14.1x; specular relL2 within 1e-4
 // but 5.6e-3 on the stress set, one glossy case 5.8% off), of which the clip and the diffuse are ~2 300.
 // Curved lights (disk, sphere, ellipsoid): al_lobe_conic below integrates the parts
 // of their curved boundary with the same forms (light/ellipse_clip.glsl, light/ellipse.glsl).

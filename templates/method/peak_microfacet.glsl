@@ -317,19 +317,13 @@ rvec3 al_pmf_half(AlMoments M, rvec3 w) {
     return h;
 }
 
-// log of x's largest value on the arc of E (method/phong_edge.glsl's al_edge_frame), for
-// al_pmf_far: once per arc, not per lobe.
-real al_pmf_log_x_max(AlEdgeFrame E) {
-    real x_max = E.ag <= AL_R(0.0) && E.bg >= AL_R(0.0) ? E.c : max(E.xa, E.xb);
-    return al_log(max(x_max, AL_R(1e-30)));
-}
-
-// The far/near choice of al_edge_frame for exponent N (log_x_max: al_pmf_log_x_max).
+// The far/near choice of al_edge_frame for exponent N (log_x_max: al_arc_log_x_max, once
+// per arc, not per lobe).
 bool al_pmf_far(AlEdgeFrame E, real log_x_max, real N) {
 #ifdef AL_FIT_PAPER
     return false;  // the paper fits the near form everywhere
 #else
-    return N * E.s * E.s > AL_R(4.0) || (N + AL_R(1.0)) * log_x_max < AL_PEAK_LOG_FAR;
+    return al_arc_far(E, log_x_max, N, AL_PEAK_LOG_FAR);
 #endif
 }
 
@@ -391,7 +385,7 @@ void al_pmf_h_arc(AL_INOUT(AlMoments) M, rvec3 p, rvec3 q, real sweep, rvec3 h_m
         M.h_close = close;
     }
     AlArcShared S = al_arc_shared(E);
-    real log_x_max = al_pmf_log_x_max(E);
+    real log_x_max = al_arc_log_x_max(E);
 #ifndef AL_FIT_PAPER
     real ta = S.ta, dtau = S.dtau;
     // Sliver offset d_mid / (L/2)^2 (inward positive: the true region is smaller).

@@ -36,6 +36,20 @@ struct AlEdgeFrame {
     bool far_edge;
 };
 
+// log of x's maximum on the arc of E (its fields ag, bg, c, xa, xb), independent of the
+// exponent: the microfacet peak methods (method/peak_microfacet.glsl) take it once per arc
+// and test each lobe's exponent against it.
+real al_arc_log_x_max(AlEdgeFrame E) {
+    real x_max = E.ag <= AL_R(0.0) && E.bg >= AL_R(0.0) ? E.c : max(E.xa, E.xb);
+    return al_log(max(x_max, AL_R(1e-30)));
+}
+
+// Whether exponent N takes the far form on the arc of E, by the rule al_edge_frame's comment
+// states (log_x_max: al_arc_log_x_max).
+bool al_arc_far(AlEdgeFrame E, real log_x_max, real N, real log_far) {
+    return N * E.s * E.s > AL_R(4.0) || (N + AL_R(1.0)) * log_x_max < log_far;
+}
+
 // D lies in r's hemisphere, so x = r.u >= 0 on the arc and tau stays in [-pi/2, pi/2].
 // Near form only where the arc meets the lobe: its great circle passes within
 // ~2/sqrt(N) of r and x^(N+1) on the arc reaches exp(log_far) (x's maximum is c at the foot
@@ -56,8 +70,6 @@ AlEdgeFrame al_edge_frame(rvec3 a, rvec3 b, rvec3 m, rvec3 r, real N, real log_f
     E.bf = dot(b, f);
     E.xa = dot(r, a);
     E.xb = dot(r, b);
-    real x_max = E.ag <= AL_R(0.0) && E.bg >= AL_R(0.0) ? E.c : max(E.xa, E.xb);
-    E.far_edge = N * E.s * E.s > AL_R(4.0) ||
-                 (N + AL_R(1.0)) * al_log(max(x_max, AL_R(1e-30))) < log_far;
+    E.far_edge = al_arc_far(E, al_arc_log_x_max(E), N, log_far);
     return E;
 }
