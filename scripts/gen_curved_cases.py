@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Seeded hard light cases (arealight-cases/1) that stress the exact and peak methods.
 
-Usage: gen_curved_cases.py COUNT SEED OUT.json [--kind hard|near|aimed|extreme|degenerate] [--lights L,...]
+Usage: gen_curved_cases.py COUNT SEED OUT.json [--kind hard|near|aimed|horizon-peak|extreme|degenerate]
+                           [--lights L,...]
 
 --kind hard (default): the lights of --lights (default disk,sphere,ellipsoid; also
 polygon: convex 3- to 8-gons facing p, jittered vertices) in turn, for phong, blinn,
@@ -22,6 +23,13 @@ size) whose centre lies within 0.8 of its angular size of n's horizon, r aimed a
 point of the light or its edge (up to 0.2 rad off), N log-uniform in [1, 200]: the
 low-N lobes that see a light near the horizon, where the specular moment is a small
 difference of boundary terms.
+
+--kind horizon-peak: Phong polygons the horizon cuts through the lobe's peak (the
+seeded set of tests/test_shading.cpp's horizon_peak_polygons, drawn alike): N
+log-uniform in [1, 1e5], r 1e-7 rad to two lobe widths (2 / sqrt(N + 2), at most 0.3
+rad) above n's horizon, the light's centre within two widths of r in azimuth and 0.3
+to 3 widths of the horizon in elevation, convex 3- to 8-gons 1.2 to 8 away and 0.05 to
+2 times that wide.
 
 --kind extreme: disks, spheres and ellipsoids at the ends of every range, for the
 no-NaN/Inf/negative guarantee and the fp32 input conditioning: coordinates of scale
@@ -227,6 +235,36 @@ def aimed_cases(count, seed):
     return cases
 
 
+def horizon_peak_cases(count, seed):
+    rng = random.Random(seed)
+    n = [0.0, 0.0, 1.0]
+    cases = []
+    for i in range(count):
+        N = math.exp(math.log(1e5) * rng.random())
+        width = 2 / math.sqrt(N + 2)
+        er = 10 ** rng.uniform(-7, math.log10(min(0.3, 2 * width)))
+        r = [math.cos(er), 0.0, math.sin(er)]
+        v = add(scale(n, 2 * r[2]), r, -1)
+        az = rng.uniform(-2, 2) * width
+        el = rng.uniform(-1, 1) * width * rng.choice([0.3, 1.0, 3.0])
+        d = [math.cos(el) * math.cos(az), math.cos(el) * math.sin(az), math.sin(el)]
+        dist = rng.uniform(1.2, 8)
+        half = 0.5 * rng.uniform(0.05, 1) * dist * rng.choice([0.05, 0.2, 1.0, 2.0])
+        t1 = unit(cross(d, [rng.random() - 0.5, 0.5, 0.8]))
+        t2 = cross(d, t1)
+        k = rng.choice([3, 4, 5, 6, 8])
+        aspect = rng.uniform(0.2, 1)
+        verts = []
+        for j in range(k):
+            a = -2 * math.pi * (j + 0.7 * rng.random()) / k  # clockwise about d: faces p
+            verts.append(add(add(scale(d, dist), t1, half * math.cos(a)), t2,
+                             half * aspect * math.sin(a)))
+        cases.append({"id": "horizon-peak-%04d" % i, "p": [0, 0, 0], "n": n, "v": unit(v),
+                      "light": {"type": "polygon", "vertices": verts, "two_sided": False},
+                      "material": {"distribution": "phong", "exponent": N}})
+    return cases
+
+
 def extreme_cases(count, seed):
     g = Gen(seed)
     rng = g.rng
@@ -390,7 +428,8 @@ def main():
     ap.add_argument("count", type=int)
     ap.add_argument("seed", type=int)
     ap.add_argument("out")
-    ap.add_argument("--kind", choices=["hard", "near", "aimed", "extreme", "degenerate"], default="hard")
+    ap.add_argument("--kind", choices=["hard", "near", "aimed", "horizon-peak", "extreme", "degenerate"],
+                    default="hard")
     ap.add_argument("--lights", default=None,
                     help="comma-separated light types of --kind hard (polygon, disk, sphere, ellipsoid; "
                     "default: the curved three) and degenerate (default: all four)")
@@ -404,6 +443,8 @@ def main():
         cases = cases_in_turn(hard_case, a.count, a.seed, lights)
     elif a.kind == "aimed":
         cases = aimed_cases(a.count, a.seed)
+    elif a.kind == "horizon-peak":
+        cases = horizon_peak_cases(a.count, a.seed)
     elif a.kind == "extreme":
         cases = extreme_cases(a.count, a.seed)
     elif a.kind == "degenerate":

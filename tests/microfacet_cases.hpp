@@ -55,6 +55,39 @@ inline CaseSet random_microfacet_polygons(std::uint64_t seed, int count, Distrib
     return set;
 }
 
+// Grazing views, n.v exactly each of 1e-3, 1e-4 and 1e-7 (n = +z, v in the xz plane), at
+// alpha 0.1, 0.3, 0.5, 0.77 and 1 (blinn: N = 2 / alpha^2 - 2, at least 1), each with a
+// square light about the mirror direction r (itself 2 n.v above the horizon) raised by
+// 0.02, 0.3 and 0.8 rad (the lowest one cut by the horizon), a random azimuth within
+// 0.5 rad of r's, 2 to 6 away, 0.5 to 3 wide.
+inline CaseSet grazing_microfacet_polygons(std::uint64_t seed, Distribution d) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> U(0, 1);
+    CaseSet set;
+    for (double nv : {1e-3, 1e-4, 1e-7}) {
+        for (double alpha : {0.1, 0.3, 0.5, 0.77, 1.0}) {
+            for (double elevation : {0.02, 0.3, 0.8}) {
+                const glm::dvec3 n(0, 0, 1), v(std::sqrt(1 - nv * nv), 0, nv);
+                const double az = U(rng) - 0.5, dist = 2 + 4 * U(rng), half = 0.25 + 1.25 * U(rng);
+                const glm::dvec3 dir(-std::cos(elevation) * std::cos(az),
+                                     std::cos(elevation) * std::sin(az), std::sin(elevation));
+                const glm::dvec3 t1 = glm::normalize(glm::cross(dir, n)), t2 = glm::cross(dir, t1);
+                std::vector<glm::dvec3> verts;
+                for (int j = 0; j < 4; ++j) {
+                    const double a = -2 * kPi_ * (j + 0.5) / 4;  // clockwise about dir
+                    verts.push_back(dist * dir +
+                                    half * std::sqrt(2.0) * (std::cos(a) * t1 + std::sin(a) * t2));
+                }
+                const double p =
+                    d == Distribution::Blinn ? std::max(2 / (alpha * alpha) - 2, 1.0) : alpha;
+                set.cases.push_back(polygon_case("grazing-" + std::to_string(set.cases.size()),
+                                                 verts, n, v, d, p));
+            }
+        }
+    }
+    return set;
+}
+
 // Extreme microfacet polygon cases: alpha 1e-3 and 1 (N 1 and 1e5), views from
 // normal to grazing (n.v 1e-6) and from below (n.v = -0.2), two-sided quads tiny,
 // along r and nearly filling the hemisphere, for blinn, beckmann and ggx.

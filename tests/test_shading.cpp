@@ -289,6 +289,74 @@ const PeakBar kPeakBars[] = {
 // frame built in fp32 on each backend (kBackendFp32Tol), 3.5e-4 (lorentz, fit=paper).
 constexpr double kPeakBackendTol = 5e-4;
 
+
+// Lights whose lobe peak the horizon cuts (issue 25 item 3): N log-uniform in [1, 1e5], r
+// grazing, 1e-7 rad to 2 lobe widths (2 / sqrt(N + 2), at most 0.3 rad) above n's horizon
+// (log-uniform); the light's centre within 2 lobe widths
+// (2 / sqrt(N + 2)) of r in azimuth and within 0.3 to 3 widths of the horizon in
+// elevation, so the horizon crosses it near the peak; convex 3- to 8-gons (points of an
+// ellipse, axis ratio 0.2 to 1), 1.2 to 8 away, 0.05 to 2 times that wide.
+// (scripts/gen_curved_cases.py --kind horizon-peak writes such a set to a file.)
+CaseSet horizon_peak_polygons(std::uint64_t seed, int count) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> U(0, 1);
+    CaseSet set;
+    const glm::dvec3 n(0, 0, 1);
+    const double elevation_scale[] = {0.3, 1.0, 3.0}, size_scale[] = {0.05, 0.2, 1.0, 2.0};
+    const int sides[] = {3, 4, 5, 6, 8};
+    for (int i = 0; i < count; ++i) {
+        const double N = std::exp(std::log(1e5) * U(rng));
+        const double width = 2 / std::sqrt(N + 2);
+        const double top = std::log10(std::min(0.3, 2 * width));
+        const double er = std::pow(10.0, -7 + (top + 7) * U(rng));
+        const glm::dvec3 r(std::cos(er), 0, std::sin(er));
+        const glm::dvec3 v = 2 * r.z * n - r;
+        const double az = (4 * U(rng) - 2) * width;
+        const double el =
+            (2 * U(rng) - 1) * width * elevation_scale[static_cast<int>(3 * U(rng)) % 3];
+        const glm::dvec3 dir(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az),
+                             std::sin(el));
+        const double dist = 1.2 + 6.8 * U(rng);
+        const double half =
+            0.5 * (0.05 + 0.95 * U(rng)) * dist * size_scale[static_cast<int>(4 * U(rng)) % 4];
+        const glm::dvec3 t1 = glm::normalize(glm::cross(dir, glm::dvec3(U(rng) - 0.5, 0.5, 0.8)));
+        const glm::dvec3 t2 = glm::cross(dir, t1);
+        const int k = sides[static_cast<int>(5 * U(rng)) % 5];
+        const double aspect = 0.2 + 0.8 * U(rng);
+        std::vector<glm::dvec3> verts;
+        for (int j = 0; j < k; ++j) {
+            const double a = -2 * kPi * (j + 0.7 * U(rng)) / k;  // clockwise about dir
+            verts.push_back(dist * dir + half * (std::cos(a) * t1 + aspect * std::sin(a) * t2));
+        }
+        set.cases.push_back(polygon_case("horizon-peak-" + std::to_string(i), verts, n,
+                                         glm::normalize(v), Distribution::Phong, N, false));
+    }
+    return set;
+}
+
+// The three Phong peak methods on polygons against the oracle over cases, on both backends:
+// specular and moment relL2 within lorentz_tol (lorentz) or tol (pearson, ellipsoid).
+void check_phong_peaks(const CaseSet& cases, double lorentz_tol, double tol) {
+    std::map<std::string, CaseResult> ref;
+    for (const auto& c : cases.cases) ref[c.id] = reference_case(c, {});
+    const std::pair<const char*, double> bars[] = {
+        {"dist=phong,method=lorentz,light=polygon", lorentz_tol},
+        {"dist=phong,method=pearson,light=polygon", tol},
+        {"dist=phong,method=ellipsoid,light=polygon", tol},
+    };
+    for (const auto& [name, bar] : bars) {
+        for (Backend b : {Backend::Cpu, Backend::Vulkan}) {
+            const ResultSet out = run(b, name, cases);
+            REQUIRE(out.results.size() == cases.cases.size());
+            const double moment = rel_l2(out, ref, &CaseResult::moment);
+            const double specular = rel_l2(out, ref, &CaseResult::specular);
+            INFO(name << " on " << to_string(b) << ": relL2 specular " << specular << ", moment "
+                      << moment);
+            CHECK(specular <= bar);
+            CHECK(moment <= bar);
+        }
+    }
+}
 }  // namespace
 
 TEST_CASE("peak-function methods: bounded error on random polygons, backends agree",
@@ -336,25 +404,23 @@ constexpr double kPeakAimedTol = 3.5e-3;
 
 TEST_CASE("peak-function methods: low-N lobes on lights near the horizon", "[shading][vulkan]") {
     const CaseSet cases = aimed_horizon_polygons(977, 150);
-    std::map<std::string, CaseResult> ref;
-    for (const auto& c : cases.cases) ref[c.id] = reference_case(c, {});
-    const std::pair<const char*, double> bars[] = {
-        {"dist=phong,method=lorentz,light=polygon", kPeakAimedLorentzTol},
-        {"dist=phong,method=pearson,light=polygon", kPeakAimedTol},
-        {"dist=phong,method=ellipsoid,light=polygon", kPeakAimedTol},
-    };
-    for (const auto& [name, tol] : bars) {
-        for (Backend b : {Backend::Cpu, Backend::Vulkan}) {
-            const ResultSet out = run(b, name, cases);
-            REQUIRE(out.results.size() == cases.cases.size());
-            const double moment = rel_l2(out, ref, &CaseResult::moment);
-            const double specular = rel_l2(out, ref, &CaseResult::specular);
-            INFO(name << " on " << to_string(b) << ": relL2 specular " << specular << ", moment "
-                      << moment);
-            CHECK(specular <= tol);
-            CHECK(moment <= tol);
-        }
-    }
+    check_phong_peaks(cases, kPeakAimedLorentzTol, kPeakAimedTol);
+}
+
+// Issue 25 item 3's goal for the best non-exact Phong methods on lights cut by the horizon
+// through the lobe's peak: specular and moment relL2 <= 1e-2 (measured on these cases,
+// specular / moment: pearson 2.6e-3 / 5.7e-3, ellipsoid 2.7e-3 / 5.7e-3). lorentz, the
+// cheapest, 7.8e-3 / 1.3e-2, is held to 1.5x its moment. A first draw of this set with r
+// up to 0.3 rad above the horizon whatever N had one case with r at a vertex of an
+// octagon, N = 3.2e4, 4.8% off in all three: that is the fits' corner error, not the
+// horizon's, and is left to the accuracy issue.
+constexpr double kHorizonPeakTol = 1e-2;
+constexpr double kHorizonPeakLorentzTol = 2e-2;
+
+TEST_CASE("peak-function methods: lights cut by the horizon through the lobe's peak",
+          "[shading][vulkan]") {
+    const CaseSet cases = horizon_peak_polygons(2512, 300);
+    check_phong_peaks(cases, kHorizonPeakLorentzTol, kHorizonPeakTol);
 }
 
 TEST_CASE("peak-function and arvo methods: finite and non-negative at the extremes",

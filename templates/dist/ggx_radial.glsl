@@ -4,6 +4,9 @@
 // (2 pi cos theta). GGX's tail falls as 1/theta^4: in z it decays like e^(-2z),
 // and W varies on the scale of z ~ 1 both in the core and in the tail. Domain:
 // c in [0, 1] (z capped at 40 for c = 0); relative error a few ulp.
+// The scale of the lobe's core in z, past which the mass decays as e^(-z): the rule spreads
+// its nodes in log(1 + z / AL_RADIAL_CORE) (method/exact_microfacet.glsl, al_mf_mean_weight).
+#define AL_RADIAL_CORE AL_R(10.0)
 real al_radial_z(AlDist d, real c, real s2) {
     if (!(c > AL_R(0.0))) return AL_R(40.0);
     real x = sqrt(s2) / (c * d.param);

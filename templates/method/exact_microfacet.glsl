@@ -33,15 +33,20 @@
 // of r on the arc's great circle (where h comes closest to n) and sigma the
 // lobe's width plus the distance of closest approach, divided by |dh/dtau| there
 // (so the squeeze of the lobe at grazing views and the fold of the half-vector
-// map near w = -v set the spacing). Radial nodes: the substitution y = 2 pi
+// map near w = -v set the spacing); in the reference rule (fp64, 16 nodes), Newton steps
+// move tau* to where h truly comes closest (al_moments_arc). Radial nodes: the substitution y = 2 pi
 // int_theta^pi/2 D cos sin (al_ndf_y, the cosine-weighted tail) makes D sin dtheta
 // = dy / (2 pi cos theta), so the radial integrand W / cos theta is smooth on the
-// lobe's own scale.
+// lobe's own scale (GGX: nodes spread in log(1 + z / AL_RADIAL_CORE), al_mf_mean_weight).
+// Grazing views, n.v = 1e-3, 1e-4 and 1e-7, alpha 0.1 to 1 (tests/test_microfacet_shading.cpp):
+// specular within 6.4e-6 (ggx), 4.4e-6 (beckmann), 1.3e-7 (blinn) of the oracle; before
+// those two steps 1.6e-4 (ggx) and 1.8e-4 (beckmann, alpha 0.1), both at n.v = 1e-7.
 //
 // Error: see docs/microfacet.md's table (arealight eval + shared/tools/score).
-// GPU cost (navi21, `arealight gpu-cost`, the validation kernel, GGX polygon): fp64
-// default 2 019 845 (4 060x the point light's 498; 256 VGPRs, 252 spilled);
-// precision=fp32 65 157 (131x); nodes=2 radial=2 fp32 22 149 (44.5x, 152 VGPRs).
+// GPU cost (navi21, `arealight gpu-cost`, the validation kernel, GGX polygon, 2026-12-06):
+// fp64 default 2 343 030 (4 700x the point light's 498; 256 VGPRs, 282 spilled; 2 019 845
+// before the centre's Newton steps and GGX's radial spread); precision=fp32 70 660 (142x;
+// was 65 165); nodes=2 radial=2 fp32 23 687 (47.6x, 160 VGPRs; was 22 149).
 //
 // Curved lights (disk, sphere, ellipsoid): the same pieces along their curved
 // boundary (al_mf_piece with conic true; al_moments_conic, light/ellipse_clip.glsl), w and
@@ -113,13 +118,30 @@ rvec2 al_mf_horizon(AlMoments M, rvec3 e) {
 // dtheta = |dy/dz| dz / (2 pi cos theta): the ratio of two AL_RADIAL-node
 // Gauss-Legendre sums over the same nodes, so that the rule is exact for constant
 // W and the lobe's mass comes from the closed-form potentials.
+//
+// With AL_RADIAL_CORE (dist/ggx_radial.glsl) the nodes are spread in s = log(1 + (z - z_lo) /
+// AL_RADIAL_CORE) rather than in z: GGX's range in z grows as log(1 / (n.v)) at grazing
+// views while its mass stays within a few AL_RADIAL_CORE of z_lo, and 16 nodes spread
+// evenly over z in [0, 18] (n.v = 1e-7) left the lobe's core to four of them (specular
+// 9.5e-4 off at alpha 0.5).
 real al_mf_mean_weight(AlMoments M, rvec3 e, real z_lo, real z_hi) {
+#ifdef AL_RADIAL_CORE
+    real half_len = AL_R(0.5) * al_log1p((z_hi - z_lo) / AL_RADIAL_CORE), mid = half_len;
+#else
     real half_len = AL_R(0.5) * (z_hi - z_lo), mid = AL_R(0.5) * (z_hi + z_lo);
+#endif
     real num = AL_R(0.0), den = AL_R(0.0);
     for (int k = 0; k < AL_RADIAL; ++k) {
+#ifdef AL_RADIAL_CORE
+        real g = al_exp(mid + half_len * AL_GR_X[k]);  // dz/ds / AL_RADIAL_CORE
+        rvec3 node = al_radial_node(M.d, z_lo + AL_RADIAL_CORE * (g - AL_R(1.0)));
+        if (!(node.x > AL_R(0.0))) continue;  // theta = pi/2: no mass in fp (z rounded to its end)
+        real mass = AL_GR_W[k] * g * node.z / node.x;
+#else
         rvec3 node = al_radial_node(M.d, mid + half_len * AL_GR_X[k]);
         if (!(node.x > AL_R(0.0))) continue;  // theta = pi/2: no mass in fp (z rounded to its end)
         real mass = AL_GR_W[k] * node.z / node.x;
+#endif
         num += mass * al_mf_weight(M, rvec2(node.x, node.y), e);
         den += mass;
     }
@@ -260,6 +282,18 @@ void al_mf_piece(AL_INOUT(AlMoments) M, bool conic, rvec3 C, rvec3 ws, rvec3 ts,
     M.specular += acc[0].y - acc[3].y - outer.y;
 }
 
+// Newton steps that refine an arc's centre (al_moments_arc): for the in-shader reference
+// only (fp64, 16 nodes an arc piece). At fp32 they changed no public set's relL2 by more
+// than rounding and cost 8-15% (navi21; ggx nodes=2 radial=2 22 149 -> 25 584 cycles a
+// wave), and fp32 cannot resolve the grazing views they are for; with 2 or 3 nodes an arc
+// piece (fp64) they cost 16-19% for relL2 changes of -2% to +4% (ggx nodes=3: specular
+// 2.47e-3 -> 2.58e-3).
+#if AL_PRECISION_FP64 && AL_NODES >= 8
+#define AL_CENTRE_STEPS 4
+#else
+#define AL_CENTRE_STEPS 0
+#endif
+
 // One arc a -> b of the lit region with inward unit normal m (light/polygon.glsl),
 // integrated about its centre w* (al_mf_piece).
 void al_moments_arc(AL_INOUT(AlMoments) M, rvec3 a, rvec3 b, rvec3 m, rvec3 axis, rvec3 n,
@@ -277,6 +311,29 @@ void al_moments_arc(AL_INOUT(AlMoments) M, rvec3 a, rvec3 b, rvec3 m, rvec3 axis
     real shift = -(dot(dd, M.u1) * p1 + l2 * dot(dd, M.u2) * p2) / (p1 * p1 + l2 * p2 * p2);
     ws = normalize(ws + clamp(shift, AL_R(-1e6), AL_R(1e6)) * ts);  // along the gnomonic line
     ts = cross(m, ws);
+    // That metric holds near r only. At grazing views the lobe's preimage is a wedge in
+    // the plane of incidence that widens with the elevation, and an arc crossing it well
+    // above r came closest to n far from that estimate (n.v = 1e-7, beckmann alpha 0.1:
+    // theta_h 0.29 there against 0.20 at the true closest point; specular 1.8e-4 and ndf
+    // 1.6e-4 off). Newton steps on d(n.h)/dtau = 0 from it, each kept only if n.h grows.
+#if AL_CENTRE_STEPS > 0
+    real nh_best = dot(M.n, normalize(ws + M.v));
+    for (int it = 0; it < AL_CENTRE_STEPS; ++it) {
+        rvec3 P = ws + M.v;
+        real nw1 = dot(M.n, ts), vw1 = dot(M.v, ts), nP = dot(M.n, P), PP = dot(P, P);
+        real g = nw1 * PP - nP * vw1;  // |P|^3 d(n.h)/dtau
+        real g1 = -dot(M.n, ws) * PP + nw1 * vw1 + nP * dot(M.v, ws);
+        if (!(g1 < AL_R(0.0))) break;  // not towards a maximum
+        real step = clamp(-g / g1, AL_R(-0.5), AL_R(0.5));
+        rvec2 sc = al_sincos(step);
+        rvec3 ws_new = sc.y * ws + sc.x * ts;
+        real nh = dot(M.n, normalize(ws_new + M.v));
+        if (!(nh > nh_best)) break;
+        nh_best = nh;
+        ws = normalize(ws_new);
+        ts = cross(m, ws);
+    }
+#endif
     real ta_s = dot(a, ts), ta_c = dot(a, ws), tb_s = dot(b, ts), tb_c = dot(b, ws);
     if (al_atan2(ta_s, ta_c) > AL_R(0.0) || al_atan2(tb_s, tb_c) < AL_R(0.0)) {
         // Off the arc: centre on the end nearer to it.
