@@ -59,8 +59,8 @@
 // Measured error: see docs/methods.md (arealight report). GPU cost (navi21, `arealight
 // gpu-cost`, the validation kernel, polygon, against the point light's 457; with
 // AL_FAST_ARC, common/common.glsl; 2026-12-06): lorentz 8 014 (17.5x), fit=paper 5 323
-// (11.6x); pearson 9 466 (20.7x), fit=paper 7 202 (15.8x); ellipsoid 10 454 (22.9x),
-// fit=paper 8 732 (19.1x): one edge loop, counted by ACO as 8 iterations of ~1 000 cycles.
+// (11.6x); pearson 9 466 (20.7x), fit=paper 7 202 (15.8x); ellipsoid 9 942 (21.8x),
+// fit=paper 8 033 (17.6x): one edge loop, counted by ACO as 8 iterations of ~1 000 cycles.
 
 #define AL_PEAK_LOG_FAR AL_R(-2.3)
 // Integral over the arc of the ellipse's Q = a cos^2 / (sin^2 + a cos^2) =
@@ -78,12 +78,16 @@ real al_ellipse_q_at(real ag, real af, real bg, real bf, real dtau, real a, bool
     real integral_p = AL_R(0.5) * sa * (a + AL_R(1.0)) * psi - AL_R(0.25) * a * (a - AL_R(1.0)) * rat;
     return (integral_p - a * a * dtau) / (AL_R(1.0) - a * a);
 }
+// One call of al_ellipse_q_at, at a or at the interpolation's far end: with a call in each
+// branch, each inlined copy of it held its own registers (ggx ellipsoid 184 VGPRs, 2 waves
+// on navi21 and latency-bound; one copy: 168, 3 waves, 45 855 -> 30 888 cycles a wave).
 real al_ellipse_q_integral(real ag, real af, real bg, real bf, real dtau, real a, bool squared) {
-    if (abs(AL_R(1.0) - a) >= AL_R(0.05)) return al_ellipse_q_at(ag, af, bg, bf, dtau, a, squared);
+    bool near_one = abs(AL_R(1.0) - a) < AL_R(0.05);
+    real a0 = !near_one ? a : (a < AL_R(1.0) ? AL_R(0.95) : AL_R(1.05));
+    real q0 = al_ellipse_q_at(ag, af, bg, bf, dtau, a0, squared);
+    if (!near_one) return q0;
     real q1 = AL_R(0.5) * dtau +
               AL_R(0.5) * (bg * bf / (bg * bg + bf * bf) - ag * af / (ag * ag + af * af));
-    real a0 = a < AL_R(1.0) ? AL_R(0.95) : AL_R(1.05);
-    real q0 = al_ellipse_q_at(ag, af, bg, bf, dtau, a0, squared);
     return q1 + (a - AL_R(1.0)) / (a0 - AL_R(1.0)) * (q0 - q1);
 }
 
