@@ -20,9 +20,9 @@
 //
 // GPU cost (navi21, `arealight gpu-cost`, the validation kernel, polygon, against the
 // point light's 498-573; with AL_FAST_ARC, common/common.glsl, the one-lobe loop unrolled
-// and each arc's shared terms once, 2026-12-06): lorentz 16 604 / 16 610 / 23 223 (blinn /
-// beckmann / ggx; 29-47x), pearson 19 486 / 19 491 / 28 986 (34-58x), ellipsoid 20 437 /
-// 20 442 / 30 888 (36-62x).
+// and each arc's shared terms once, 2026-12-06): lorentz 16 280 / 16 285 / 22 574 (blinn /
+// beckmann / ggx; 28-45x), pearson 18 421 / 18 427 / 26 857 (32-54x), ellipsoid 19 055 /
+// 19 061 / 28 125 (33-57x).
 //
 // The paper's formulas, checked numerically (the copy we read garbles some):
 // - eq. 23: int D_Blinn dh = (N+2)/(2 pi) int (n.h)^N dh = (N+2)/(N+1) mu_N. As printed.

@@ -58,8 +58,8 @@
 // b = a (2.1 + 1.28 x_w / x_w(0)) (ellipsoid), tail point eq. 14, alpha clamped.
 // Measured error: see docs/methods.md (arealight report). GPU cost (navi21, `arealight
 // gpu-cost`, the validation kernel, polygon, against the point light's 457; with
-// AL_FAST_ARC, common/common.glsl; 2026-12-06): lorentz 8 014 (17.5x), fit=paper 5 323
-// (11.6x); pearson 9 466 (20.7x), fit=paper 7 202 (15.8x); ellipsoid 9 942 (21.8x),
+// AL_FAST_ARC, common/common.glsl; 2026-12-06): lorentz 7 857 (17.2x), fit=paper 5 323
+// (11.6x); pearson 8 928 (19.5x), fit=paper 7 202 (15.8x); ellipsoid 9 245 (20.2x),
 // fit=paper 8 033 (17.6x): one edge loop, counted by ACO as 8 iterations of ~1 000 cycles.
 
 #define AL_PEAK_LOG_FAR AL_R(-2.3)
@@ -295,17 +295,19 @@ real al_peak_edge_term(AlEdgeFrame E, AlArcShared S, real k, bool far_edge) {
 #endif
     F.gw = al_peak_sample(s2, lc, k, F.tw2, far_edge);
     F.gt = al_peak_sample(s2, lc, k, F.tt2, far_edge);
+    // One call of the fit for both forms (a call in each branch was two inlined copies of it,
+    // with their own registers).
     if (far_edge) {
         F.gmax = s2 > AL_R(0.0) ? al_exp(k * lc) / s2 : AL_R(0.0);
         F.gmin = AL_R(0.0);
-        real fit = al_peak_integral(E.ag, E.af, E.bg, E.bf, S.ta, dtau, F);
-        if (!S.beside) return fit;
-        // g = x^k / (1 - x^2); -d log g = k tan + 2 x^2 tan / (1 - x^2).
-        real g1 = al_exp(k * S.lx1) / S.omx2;
-        real lambda = k * S.tan1 + AL_R(2.0) * S.x1 * S.x1 * S.tan1 / S.omx2;
-        return min(fit, al_tail_bound(g1, max(lambda, AL_R(0.0)), dtau));
+    } else {
+        F.gmax = s2 > AL_R(1e-30) ? -al_expm1(k * lc) / s2 : AL_R(0.5) * k;
+        F.gmin = AL_R(1.0);
     }
-    F.gmax = s2 > AL_R(1e-30) ? -al_expm1(k * lc) / s2 : AL_R(0.5) * k;
-    F.gmin = AL_R(1.0);
-    return al_peak_integral(E.ag, E.af, E.bg, E.bf, S.ta, dtau, F);
+    real fit = al_peak_integral(E.ag, E.af, E.bg, E.bf, S.ta, dtau, F);
+    if (!far_edge || !S.beside) return fit;
+    // g = x^k / (1 - x^2); -d log g = k tan + 2 x^2 tan / (1 - x^2).
+    real g1 = al_exp(k * S.lx1) / S.omx2;
+    real lambda = k * S.tan1 + AL_R(2.0) * S.x1 * S.x1 * S.tan1 / S.omx2;
+    return min(fit, al_tail_bound(g1, max(lambda, AL_R(0.0)), dtau));
 }
