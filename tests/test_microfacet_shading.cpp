@@ -104,7 +104,7 @@ TEST_CASE("fp64 exact microfacet specular at grazing views matches the oracle",
                 const CaseResult ref = reference_case(cases.cases[i], {});
                 const auto& r = out.results[i];
                 const Case& c = cases.cases[i];
-                const double nv = c.n[0] * c.v[0] + c.n[1] * c.v[1] + c.n[2] * c.v[2];
+                const double nv = glm::dot(g(c.n), g(c.v));
                 const double e = rel_err(*r.specular, *ref.specular);
                 INFO(name << " on " << to_string(b) << ", " << r.id << " (n.v " << nv
                           << "): specular "

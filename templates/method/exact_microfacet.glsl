@@ -134,14 +134,13 @@ real al_mf_mean_weight(AlMoments M, rvec3 e, real z_lo, real z_hi) {
     for (int k = 0; k < AL_RADIAL; ++k) {
 #ifdef AL_RADIAL_CORE
         real g = al_exp(mid + half_len * AL_GR_X[k]);  // dz/ds / AL_RADIAL_CORE
-        rvec3 node = al_radial_node(M.d, z_lo + AL_RADIAL_CORE * (g - AL_R(1.0)));
+        real z = z_lo + AL_RADIAL_CORE * (g - AL_R(1.0));
+#else
+        real g = AL_R(1.0), z = mid + half_len * AL_GR_X[k];
+#endif
+        rvec3 node = al_radial_node(M.d, z);
         if (!(node.x > AL_R(0.0))) continue;  // theta = pi/2: no mass in fp (z rounded to its end)
         real mass = AL_GR_W[k] * g * node.z / node.x;
-#else
-        rvec3 node = al_radial_node(M.d, mid + half_len * AL_GR_X[k]);
-        if (!(node.x > AL_R(0.0))) continue;  // theta = pi/2: no mass in fp (z rounded to its end)
-        real mass = AL_GR_W[k] * node.z / node.x;
-#endif
         num += mass * al_mf_weight(M, rvec2(node.x, node.y), e);
         den += mass;
     }
