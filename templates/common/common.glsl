@@ -189,6 +189,14 @@ real al_exp(real x) {
 // |z| < 1/2 (fp64 to z^16, < 1e-18; fp32 to z^8, < 1e-9), exp(z) - 1 beyond,
 // where it cannot cancel.
 real al_expm1(real z) {
+#ifdef AL_FAST_ARC
+    // AL_FAST_ARC: Taylor to z^5 below |z| = 0.1 (truncation < 1.4e-8 relative), exp(z) - 1
+    // beyond (rounding < 6.3e-7 relative): four FMAs fewer on each of a peak fit's paths.
+    if (abs(z) < AL_R(0.1))
+        return z * (AL_R(1.0) + z * (AL_R(0.5) + z * (AL_R(1.0) / AL_R(6.0) +
+                    z * (AL_R(1.0) / AL_R(24.0) + z * (AL_R(1.0) / AL_R(120.0))))));
+    return al_exp(z) - AL_R(1.0);
+#endif
     if (abs(z) < AL_R(0.5)) {
 #if AL_PRECISION_FP64
         real p = AL_R(1.0) / AL_R(20922789888000.0);

@@ -20,9 +20,9 @@
 //
 // GPU cost (navi21, `arealight gpu-cost`, the validation kernel, polygon, against the
 // point light's 498-573; with AL_FAST_ARC, common/common.glsl, the one-lobe loop unrolled
-// and each arc's shared terms once, 2026-12-06): lorentz 16 280 / 16 285 / 22 574 (blinn /
-// beckmann / ggx; 28-45x), pearson 18 421 / 18 427 / 26 857 (32-54x), ellipsoid 19 055 /
-// 19 061 / 28 125 (33-57x).
+// and each arc's shared terms once, 2026-12-06): lorentz 15 525 / 15 530 / 20 360 (blinn /
+// beckmann / ggx; 27-41x), pearson 17 620 / 17 625 / 24 549 (31-49x), ellipsoid 17 952 /
+// 17 957 / 24 836 (31-50x).
 //
 // The paper's formulas, checked numerically (the copy we read garbles some):
 // - eq. 23: int D_Blinn dh = (N+2)/(2 pi) int (n.h)^N dh = (N+2)/(N+1) mu_N. As printed.
@@ -259,7 +259,10 @@ struct AlMoments {
     // (r := n), and the slivers' share (fit=tuned).
     rvec3 sums;
     real wraps;
-    rvec3 sweep_near, sweep_far, size_near, size_far;
+    // The azimuth each lobe's far-form arcs sweep (and its absolute total), and every arc's
+    // (the near-form arcs' sweeps are the difference).
+    rvec3 sweep_far, size_far;
+    real sweep_all, size_all;
     rvec3 sliver;
     real omega_h;  // solid angle of the h-polygon (and its slivers)
     // The h-polygon's boundary point closest to n (max n.h).
@@ -285,10 +288,10 @@ AlMoments al_mf_begin(rvec3 n, rvec3 v, rvec3 r, real param, real f0, bool direc
     M.f0 = f0;
     M.sums = rvec3(AL_R(0.0));
     M.wraps = AL_R(0.0);
-    M.sweep_near = rvec3(AL_R(0.0));
     M.sweep_far = rvec3(AL_R(0.0));
-    M.size_near = rvec3(AL_R(0.0));
     M.size_far = rvec3(AL_R(0.0));
+    M.sweep_all = AL_R(0.0);
+    M.size_all = AL_R(0.0);
     M.sliver = rvec3(AL_R(0.0));
     M.omega_h = AL_R(0.0);
     M.h_close = n;
@@ -417,20 +420,26 @@ void al_pmf_h_arc(AL_INOUT(AlMoments) M, rvec3 p, rvec3 q, real sweep, rvec3 h_m
     real lc = S.lc;
     M.omega_h -= bend * dtau * dtau * dtau / AL_R(6.0);
 #endif
+    M.sweep_all += sweep;
+    M.size_all += abs(sweep);
+    // Each lobe's terms go to its component through a one-hot vector: a write to v[j] with j
+    // the loop's counter became a select per component and per vector, which ACO's model
+    // charges at the lobe loop's weight; and only the far-form sweeps are kept per lobe
+    // (the near ones are the totals less them; with al_peak_sample's one quotient, ggx pearson
+    // 25 601 -> 24 793). A non-finite term in one lobe was already a non-finite ndf, so the
+    // zeros' products with it change nothing.
     AL_PMF_LOBE_LOOP for (int j = 0; j < AL_PMF_LOBES; ++j) {
+        rvec3 one_hot = rvec3(j == 0 ? AL_R(1.0) : AL_R(0.0), j == 1 ? AL_R(1.0) : AL_R(0.0),
+                              j == 2 ? AL_R(1.0) : AL_R(0.0));
         real N = M.mix.N[j];
         bool far_edge = degenerate || al_pmf_far(E, log_x_max, N);
         real t1 = degenerate ? AL_R(0.0) : al_peak_edge_term(E, S, N + AL_R(1.0), far_edge);
-        M.sums[j] += (far_edge ? AL_R(1.0) : -AL_R(1.0)) * E.rm * t1;
-        if (far_edge) {
-            M.sweep_far[j] += sweep;
-            M.size_far[j] += abs(sweep);
-        } else {
-            M.sweep_near[j] += sweep;
-            M.size_near[j] += abs(sweep);
-        }
+        M.sums += one_hot * ((far_edge ? AL_R(1.0) : -AL_R(1.0)) * E.rm * t1);
+        real sweep_far = far_edge ? sweep : AL_R(0.0);
+        M.sweep_far += one_hot * sweep_far;
+        M.size_far += one_hot * abs(sweep_far);
 #ifndef AL_FIT_PAPER
-        if (bend != AL_R(0.0)) M.sliver[j] -= bend * al_pmf_sliver(lc, N, ta, ta + dtau);
+        if (bend != AL_R(0.0)) M.sliver -= one_hot * (bend * al_pmf_sliver(lc, N, ta, ta + dtau));
 #endif
     }
 }
@@ -503,8 +512,9 @@ void al_moments_arc(AL_INOUT(AlMoments) M, rvec3 a, rvec3 b, rvec3 m, rvec3 axis
 rvec2 al_mf_end(AlMoments M) {
     real ndf = M.mix.c0 * M.omega_h / AL_PI;
     for (int j = 0; j < AL_PMF_LOBES; ++j) {
-        real winding = M.size_near[j] <= M.size_far[j] ? -AL_TWO_PI * M.wraps - M.sweep_near[j]
-                                                       : M.sweep_far[j];
+        real size_near = M.size_all - M.size_far[j], sweep_near = M.sweep_all - M.sweep_far[j];
+        real winding = size_near <= M.size_far[j] ? -AL_TWO_PI * M.wraps - sweep_near
+                                                  : M.sweep_far[j];
         real N = M.mix.N[j];
         // w_j (N+2)/(2 pi) int (n.h)^N dh: (N+1)/(2 pi) int = (winding - sums) / (2 pi).
         ndf += M.mix.w[j] * (N + AL_R(2.0)) / AL_TWO_PI *

@@ -58,9 +58,9 @@
 // b = a (2.1 + 1.28 x_w / x_w(0)) (ellipsoid), tail point eq. 14, alpha clamped.
 // Measured error: see docs/methods.md (arealight report). GPU cost (navi21, `arealight
 // gpu-cost`, the validation kernel, polygon, against the point light's 457; with
-// AL_FAST_ARC, common/common.glsl; 2026-12-06): lorentz 7 857 (17.2x), fit=paper 5 323
-// (11.6x); pearson 8 928 (19.5x), fit=paper 7 202 (15.8x); ellipsoid 9 245 (20.2x),
-// fit=paper 8 033 (17.6x): one edge loop, counted by ACO as 8 iterations of ~1 000 cycles.
+// AL_FAST_ARC, common/common.glsl; 2026-12-06): lorentz 7 716 (16.9x), fit=paper 5 268
+// (11.5x); pearson 8 764 (19.2x), fit=paper 7 110 (15.6x); ellipsoid 8 812 (19.3x),
+// fit=paper 7 382 (16.2x): one edge loop, counted by ACO as 8 iterations of ~1 000 cycles.
 
 #define AL_PEAK_LOG_FAR AL_R(-2.3)
 // Integral over the arc of the ellipse's Q = a cos^2 / (sin^2 + a cos^2) =
@@ -74,28 +74,45 @@
 // ends lie within pi/2 of the foot, f >= 0, so the difference is in (-pi, pi)), and the
 // squared ellipse's two quotients share one denominator, whose numerator factors as
 // (ag bf - af bg)(ag bg - a af bf): one quotient and one atan2 fewer than the textbook form
-// (ggx ellipsoid 26 869 -> 26 049 cycles a wave, navi21).
-real al_ellipse_q_at(real ag, real af, real bg, real bf, real dtau, real a, bool squared) {
+// (ggx ellipsoid 26 869 -> 26 049 cycles a wave, navi21). What of it depends on the arc's ends
+// alone is computed once per arc (AlArcEnds): the microfacet methods fit in a loop over lobes
+// nested in the edge loop, out of which the GPU compilers do not hoist it (ggx ellipsoid
+// 24 937 -> 24 836).
+struct AlArcEnds {
+    real cross, gg, ff;          // bg af - ag bf, ag bg, af bf
+    real ag2, af2, bg2, bf2;     // the squares
+    real q1;                     // the integral at a = 1: dtau/2 + (sin 2tau_b - sin 2tau_a)/4
+};
+AlArcEnds al_arc_ends(real ag, real af, real bg, real bf, real dtau) {
+    AlArcEnds X;
+    X.cross = bg * af - ag * bf;
+    X.gg = ag * bg;
+    X.ff = af * bf;
+    X.ag2 = ag * ag;
+    X.af2 = af * af;
+    X.bg2 = bg * bg;
+    X.bf2 = bf * bf;
+    X.q1 = AL_R(0.5) * dtau + AL_R(0.5) * (bg * bf / (X.bg2 + X.bf2) - ag * af / (X.ag2 + X.af2));
+    return X;
+}
+real al_ellipse_q_at(AlArcEnds X, real dtau, real a, bool squared) {
     real sa = sqrt(a);
-    real cross = bg * af - ag * bf;
-    real psi = al_atan2(sa * cross, a * af * bf + ag * bg);
+    real psi = al_atan2(sa * X.cross, a * X.ff + X.gg);
     if (!squared) return (sa * psi - a * dtau) / (AL_R(1.0) - a);
-    real da = ag * ag + a * af * af, db = bg * bg + a * bf * bf;
-    real rat = -AL_R(2.0) * cross * (ag * bg - a * af * bf) / (da * db);
+    real da = X.ag2 + a * X.af2, db = X.bg2 + a * X.bf2;
+    real rat = -AL_R(2.0) * X.cross * (X.gg - a * X.ff) / (da * db);
     real integral_p = AL_R(0.5) * sa * (a + AL_R(1.0)) * psi - AL_R(0.25) * a * (a - AL_R(1.0)) * rat;
     return (integral_p - a * a * dtau) / (AL_R(1.0) - a * a);
 }
 // One call of al_ellipse_q_at, at a or at the interpolation's far end: with a call in each
 // branch, each inlined copy of it held its own registers (ggx ellipsoid 184 VGPRs, 2 waves
 // on navi21 and latency-bound; one copy: 168, 3 waves, 45 855 -> 30 888 cycles a wave).
-real al_ellipse_q_integral(real ag, real af, real bg, real bf, real dtau, real a, bool squared) {
+real al_ellipse_q_integral(AlArcEnds X, real dtau, real a, bool squared) {
     bool near_one = abs(AL_R(1.0) - a) < AL_R(0.05);
     real a0 = !near_one ? a : (a < AL_R(1.0) ? AL_R(0.95) : AL_R(1.05));
-    real q0 = al_ellipse_q_at(ag, af, bg, bf, dtau, a0, squared);
+    real q0 = al_ellipse_q_at(X, dtau, a0, squared);
     if (!near_one) return q0;
-    real q1 = AL_R(0.5) * dtau +
-              AL_R(0.5) * (bg * bf / (bg * bg + bf * bf) - ag * af / (ag * ag + af * af));
-    return q1 + (a - AL_R(1.0)) / (a0 - AL_R(1.0)) * (q0 - q1);
+    return X.q1 + (a - AL_R(1.0)) / (a0 - AL_R(1.0)) * (q0 - X.q1);
 }
 
 // A fit of g over an arc: its closed-form max and min, and exact samples at the
@@ -158,10 +175,10 @@ real al_blend_alpha(real q_wide, real q_narrow, real yt) {
     return clamp((q_narrow - yt) / den, AL_R(0.0), AL_R(1.0));
 }
 
-// Integral over [tau_a, tau_b] (tau = atan(g, f) of each end, ta = tau_a, dtau = tau_b -
-// tau_a >= 0) of the fit of g through F. Finite for any input; a flat g integrates as
-// g_min dtau.
-real al_peak_integral(real ag, real af, real bg, real bf, real ta, real dtau, AlPeakFit F) {
+// Integral over [tau_a, tau_b] (tau = atan(g, f) of each end, X = al_arc_ends of them,
+// ta = tau_a, dtau = tau_b - tau_a >= 0) of the fit of g through F. Finite for any input; a
+// flat g integrates as g_min dtau.
+real al_peak_integral(AlArcEnds X, real ta, real dtau, AlPeakFit F) {
     real span = F.gmax - F.gmin;
     if (!(abs(span) > AL_R(1e-7) * max(abs(F.gmax), abs(F.gmin)))) return F.gmin * dtau;
     real y = clamp((F.gw - F.gmin) / span, AL_R(1e-6), AL_R(0.999999));
@@ -194,7 +211,7 @@ real al_peak_integral(real ag, real af, real bg, real bf, real ta, real dtau, Al
     // Q = a cos^2 / (sin^2 + a cos^2) for any a > 0 (a > 1: g rises away from 0);
     // Q(tau_w) = y gives a in closed form (eq. 18).
     real a = clamp(y * F.tw2 / (AL_R(1.0) - y), AL_R(1e-12), AL_R(1e6));
-    real integral_q = al_ellipse_q_integral(ag, af, bg, bf, dtau, a, false);
+    real integral_q = al_ellipse_q_integral(X, dtau, a, false);
 #ifdef AL_FIT_PAPER
     // Squared ellipse with b = a (2.1 + 1.28 x_w / x_w(0)), blended at the tail point.
     real xw = al_atan2(sqrt(F.tw2), AL_R(1.0));
@@ -206,7 +223,7 @@ real al_peak_integral(real ag, real af, real bg, real bf, real ta, real dtau, Al
     real p = sqrt(y);
     real b = clamp(p * F.tw2 / (AL_R(1.0) + F.tw2 - p), AL_R(1e-12), AL_R(1e6));
     for (int it = 0; it < 2; ++it) {
-        p = sqrt(b * b + y * (AL_R(1.0) - b * b));
+        p = sqrt(y + (AL_R(1.0) - y) * b * b);
         b = clamp(p * F.tw2 / max(AL_R(1.0) + F.tw2 - p, AL_R(1e-12)), AL_R(1e-12), AL_R(1e6));
     }
 #endif
@@ -217,7 +234,7 @@ real al_peak_integral(real ag, real af, real bg, real bf, real ta, real dtau, Al
                ((F.tt2 + b) * (F.tt2 + b) * (AL_R(1.0) + b));
     real alpha = al_blend_alpha(qe, qe2, yt);
     integral_q = alpha * integral_q +
-                 (AL_R(1.0) - alpha) * al_ellipse_q_integral(ag, af, bg, bf, dtau, b, true);
+                 (AL_R(1.0) - alpha) * al_ellipse_q_integral(X, dtau, b, true);
 #endif
     // Q lies in [0, 1], so its integral in [0, dtau]: rounding of the closed forms
     // on short arcs must not push the fit below g_min or above g_max.
@@ -254,10 +271,12 @@ bool al_arc_near_end(AlEdgeFrame E, AL_INOUT(real) tan1, AL_INOUT(real) x1) {
 struct AlArcShared {
     real s2, lc;   // s^2 and log c
     real ta, dtau; // tau_a and tau_b - tau_a >= 0
+    AlArcEnds ends;  // the ellipse fits' products of the ends
     bool beside;   // the foot lies outside the arc (al_arc_near_end); then, at the nearer end:
     real tan1;     // tan(tau_1)
     real x1, lx1;  // x and log x
     real omx2;     // 1 - x^2 = s^2 + c^2 sin^2(tau_1)
+    real inv_omx2, lambda0;  // 1 / omx2 and 2 x^2 tan(tau_1) / omx2 (al_peak_edge_term's tail)
 };
 AlArcShared al_arc_shared(AlEdgeFrame E) {
     AlArcShared S;
@@ -265,11 +284,14 @@ AlArcShared al_arc_shared(AlEdgeFrame E) {
     S.lc = AL_R(0.5) * al_log1p(-S.s2);
     S.ta = al_atan2(E.ag, E.af);
     S.dtau = max(al_atan2(E.bg, E.bf) - S.ta, AL_R(0.0));
+    S.ends = al_arc_ends(E.ag, E.af, E.bg, E.bf, S.dtau);
     S.tan1 = AL_R(0.0);
     S.x1 = AL_R(0.0);
     S.beside = al_arc_near_end(E, S.tan1, S.x1);
     real sin2 = S.tan1 * S.tan1 / (AL_R(1.0) + S.tan1 * S.tan1);
     S.omx2 = S.s2 + (AL_R(1.0) - S.s2) * sin2;
+    S.inv_omx2 = AL_R(1.0) / S.omx2;
+    S.lambda0 = AL_R(2.0) * S.x1 * S.x1 * S.tan1 * S.inv_omx2;
     S.lx1 = al_log(max(S.x1, AL_R(1e-30)));
     return S;
 }
@@ -278,9 +300,8 @@ AlArcShared al_arc_shared(AlEdgeFrame E) {
 // (1 - x^k) / (1 - x^2), or the far form x^k / (1 - x^2). 1 - x^2 =
 // (s^2 + t2) / (1 + t2) without cancellation, log x = log c - log1p(t2) / 2.
 real al_peak_sample(real s2, real lc, real k, real t2, bool far_edge) {
-    real one_minus_x2 = (s2 + t2) / (AL_R(1.0) + t2);
     real lx = lc - AL_R(0.5) * al_log1p(t2);
-    return (far_edge ? al_exp(k * lx) : -al_expm1(k * lx)) / one_minus_x2;
+    return (far_edge ? al_exp(k * lx) : -al_expm1(k * lx)) * (AL_R(1.0) + t2) / (s2 + t2);
 }
 
 // Fitted integral of the near-form integrand (1 - x^k) / (1 - x^2) (far = false)
@@ -296,7 +317,7 @@ real al_peak_edge_term(AlEdgeFrame E, AlArcShared S, real k, bool far_edge) {
     F.tw2 = txw * txw;
     F.tt2 = txt * txt;
 #else
-    F.tw2 = far_edge ? AL_R(1.38629436111989061883) / (k + AL_R(2.0) / max(s2, AL_R(1e-30)))
+    F.tw2 = far_edge ? AL_R(1.38629436111989061883) * s2 / (k * s2 + AL_R(2.0))
                      : s2 + AL_R(2.0) / k;
     F.tt2 = AL_R(4.0) * F.tw2;
 #endif
@@ -311,10 +332,10 @@ real al_peak_edge_term(AlEdgeFrame E, AlArcShared S, real k, bool far_edge) {
         F.gmax = s2 > AL_R(1e-30) ? -al_expm1(k * lc) / s2 : AL_R(0.5) * k;
         F.gmin = AL_R(1.0);
     }
-    real fit = al_peak_integral(E.ag, E.af, E.bg, E.bf, S.ta, dtau, F);
+    real fit = al_peak_integral(S.ends, S.ta, dtau, F);
     if (!far_edge || !S.beside) return fit;
     // g = x^k / (1 - x^2); -d log g = k tan + 2 x^2 tan / (1 - x^2).
-    real g1 = al_exp(k * S.lx1) / S.omx2;
-    real lambda = k * S.tan1 + AL_R(2.0) * S.x1 * S.x1 * S.tan1 / S.omx2;
+    real g1 = al_exp(k * S.lx1) * S.inv_omx2;
+    real lambda = k * S.tan1 + S.lambda0;
     return min(fit, al_tail_bound(g1, max(lambda, AL_R(0.0)), dtau));
 }
