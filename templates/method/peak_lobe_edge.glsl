@@ -50,7 +50,7 @@ AlLobeEdge al_lobe_edge(rvec3 a, rvec3 b, rvec3 m, rvec3 r, rvec3 n, real N) {
     F.gw = AL_R(0.5) * cn;
     F.tt2 = AL_R(4.0) * F.tw2;
     F.gt = al_exp(N * (lc - AL_R(0.5) * al_log1p(F.tt2)));
-    real tz = al_peak_integral(S.ends, S.ta, S.dtau, F);
+    real tz = al_peak_integral(E.ag, E.af, E.bg, E.bf, S.ta, S.dtau, F);
 #else
     real tz = rule.z;
 #endif

@@ -59,8 +59,8 @@
 // Measured error: see docs/methods.md (arealight report). GPU cost (navi21, `arealight
 // gpu-cost`, the validation kernel, polygon, against the point light's 457; with
 // AL_FAST_ARC, common/common.glsl; 2026-12-06): lorentz 7 716 (16.9x), fit=paper 5 268
-// (11.5x); pearson 8 764 (19.2x), fit=paper 7 110 (15.6x); ellipsoid 8 812 (19.3x),
-// fit=paper 7 382 (16.2x): one edge loop, counted by ACO as 8 iterations of ~1 000 cycles.
+// (11.5x); pearson 8 764 (19.2x), fit=paper 7 110 (15.6x); ellipsoid 8 860 (19.4x),
+// fit=paper 7 526 (16.5x): one edge loop, counted by ACO as 8 iterations of ~1 000 cycles.
 
 #define AL_PEAK_LOG_FAR AL_R(-2.3)
 // Integral over the arc of the ellipse's Q = a cos^2 / (sin^2 + a cos^2) =
@@ -74,45 +74,32 @@
 // ends lie within pi/2 of the foot, f >= 0, so the difference is in (-pi, pi)), and the
 // squared ellipse's two quotients share one denominator, whose numerator factors as
 // (ag bf - af bg)(ag bg - a af bf): one quotient and one atan2 fewer than the textbook form
-// (ggx ellipsoid 26 869 -> 26 049 cycles a wave, navi21). What of it depends on the arc's ends
-// alone is computed once per arc (AlArcEnds): the microfacet methods fit in a loop over lobes
-// nested in the edge loop, out of which the GPU compilers do not hoist it (ggx ellipsoid
-// 24 937 -> 24 836).
-struct AlArcEnds {
-    real cross, gg, ff;          // bg af - ag bf, ag bg, af bf
-    real ag2, af2, bg2, bf2;     // the squares
-    real q1;                     // the integral at a = 1: dtau/2 + (sin 2tau_b - sin 2tau_a)/4
-};
-AlArcEnds al_arc_ends(real ag, real af, real bg, real bf, real dtau) {
-    AlArcEnds X;
-    X.cross = bg * af - ag * bf;
-    X.gg = ag * bg;
-    X.ff = af * bf;
-    X.ag2 = ag * ag;
-    X.af2 = af * af;
-    X.bg2 = bg * bg;
-    X.bf2 = bf * bf;
-    X.q1 = AL_R(0.5) * dtau + AL_R(0.5) * (bg * bf / (X.bg2 + X.bf2) - ag * af / (X.ag2 + X.af2));
-    return X;
-}
-real al_ellipse_q_at(AlArcEnds X, real dtau, real a, bool squared) {
+// (ggx ellipsoid 26 869 -> 26 049 cycles a wave, navi21). Computing the ends' products once
+// per arc instead (they do not depend on a, and GGX fits in a loop over three lobes) took
+// ggx ellipsoid to 24 825 but blinn's and beckmann's curved ellipsoids to 176 VGPRs and 2
+// waves in ACO's model (22 029 -> 28 569 cycles a wave): written as here, each call forms
+// them afresh and none lives across the fit.
+real al_ellipse_q_at(real ag, real af, real bg, real bf, real dtau, real a, bool squared) {
     real sa = sqrt(a);
-    real psi = al_atan2(sa * X.cross, a * X.ff + X.gg);
+    real cross = bg * af - ag * bf;
+    real psi = al_atan2(sa * cross, a * af * bf + ag * bg);
     if (!squared) return (sa * psi - a * dtau) / (AL_R(1.0) - a);
-    real da = X.ag2 + a * X.af2, db = X.bg2 + a * X.bf2;
-    real rat = -AL_R(2.0) * X.cross * (X.gg - a * X.ff) / (da * db);
+    real da = ag * ag + a * af * af, db = bg * bg + a * bf * bf;
+    real rat = -AL_R(2.0) * cross * (ag * bg - a * af * bf) / (da * db);
     real integral_p = AL_R(0.5) * sa * (a + AL_R(1.0)) * psi - AL_R(0.25) * a * (a - AL_R(1.0)) * rat;
     return (integral_p - a * a * dtau) / (AL_R(1.0) - a * a);
 }
 // One call of al_ellipse_q_at, at a or at the interpolation's far end: with a call in each
 // branch, each inlined copy of it held its own registers (ggx ellipsoid 184 VGPRs, 2 waves
 // on navi21 and latency-bound; one copy: 168, 3 waves, 45 855 -> 30 888 cycles a wave).
-real al_ellipse_q_integral(AlArcEnds X, real dtau, real a, bool squared) {
+real al_ellipse_q_integral(real ag, real af, real bg, real bf, real dtau, real a, bool squared) {
     bool near_one = abs(AL_R(1.0) - a) < AL_R(0.05);
     real a0 = !near_one ? a : (a < AL_R(1.0) ? AL_R(0.95) : AL_R(1.05));
-    real q0 = al_ellipse_q_at(X, dtau, a0, squared);
+    real q0 = al_ellipse_q_at(ag, af, bg, bf, dtau, a0, squared);
     if (!near_one) return q0;
-    return X.q1 + (a - AL_R(1.0)) / (a0 - AL_R(1.0)) * (q0 - X.q1);
+    real q1 = AL_R(0.5) * dtau +
+              AL_R(0.5) * (bg * bf / (bg * bg + bf * bf) - ag * af / (ag * ag + af * af));
+    return q1 + (a - AL_R(1.0)) / (a0 - AL_R(1.0)) * (q0 - q1);
 }
 
 // A fit of g over an arc: its closed-form max and min, and exact samples at the
@@ -175,10 +162,10 @@ real al_blend_alpha(real q_wide, real q_narrow, real yt) {
     return clamp((q_narrow - yt) / den, AL_R(0.0), AL_R(1.0));
 }
 
-// Integral over [tau_a, tau_b] (tau = atan(g, f) of each end, X = al_arc_ends of them,
-// ta = tau_a, dtau = tau_b - tau_a >= 0) of the fit of g through F. Finite for any input; a
-// flat g integrates as g_min dtau.
-real al_peak_integral(AlArcEnds X, real ta, real dtau, AlPeakFit F) {
+// Integral over [tau_a, tau_b] (tau = atan(g, f) of each end, ta = tau_a, dtau = tau_b -
+// tau_a >= 0) of the fit of g through F. Finite for any input; a flat g integrates as
+// g_min dtau.
+real al_peak_integral(real ag, real af, real bg, real bf, real ta, real dtau, AlPeakFit F) {
     real span = F.gmax - F.gmin;
     if (!(abs(span) > AL_R(1e-7) * max(abs(F.gmax), abs(F.gmin)))) return F.gmin * dtau;
     real y = clamp((F.gw - F.gmin) / span, AL_R(1e-6), AL_R(0.999999));
@@ -211,7 +198,7 @@ real al_peak_integral(AlArcEnds X, real ta, real dtau, AlPeakFit F) {
     // Q = a cos^2 / (sin^2 + a cos^2) for any a > 0 (a > 1: g rises away from 0);
     // Q(tau_w) = y gives a in closed form (eq. 18).
     real a = clamp(y * F.tw2 / (AL_R(1.0) - y), AL_R(1e-12), AL_R(1e6));
-    real integral_q = al_ellipse_q_integral(X, dtau, a, false);
+    real integral_q = al_ellipse_q_integral(ag, af, bg, bf, dtau, a, false);
 #ifdef AL_FIT_PAPER
     // Squared ellipse with b = a (2.1 + 1.28 x_w / x_w(0)), blended at the tail point.
     real xw = al_atan2(sqrt(F.tw2), AL_R(1.0));
@@ -234,7 +221,7 @@ real al_peak_integral(AlArcEnds X, real ta, real dtau, AlPeakFit F) {
                ((F.tt2 + b) * (F.tt2 + b) * (AL_R(1.0) + b));
     real alpha = al_blend_alpha(qe, qe2, yt);
     integral_q = alpha * integral_q +
-                 (AL_R(1.0) - alpha) * al_ellipse_q_integral(X, dtau, b, true);
+                 (AL_R(1.0) - alpha) * al_ellipse_q_integral(ag, af, bg, bf, dtau, b, true);
 #endif
     // Q lies in [0, 1], so its integral in [0, dtau]: rounding of the closed forms
     // on short arcs must not push the fit below g_min or above g_max.
@@ -271,7 +258,6 @@ bool al_arc_near_end(AlEdgeFrame E, AL_INOUT(real) tan1, AL_INOUT(real) x1) {
 struct AlArcShared {
     real s2, lc;   // s^2 and log c
     real ta, dtau; // tau_a and tau_b - tau_a >= 0
-    AlArcEnds ends;  // the ellipse fits' products of the ends
     bool beside;   // the foot lies outside the arc (al_arc_near_end); then, at the nearer end:
     real tan1;     // tan(tau_1)
     real x1, lx1;  // x and log x
@@ -284,7 +270,6 @@ AlArcShared al_arc_shared(AlEdgeFrame E) {
     S.lc = AL_R(0.5) * al_log1p(-S.s2);
     S.ta = al_atan2(E.ag, E.af);
     S.dtau = max(al_atan2(E.bg, E.bf) - S.ta, AL_R(0.0));
-    S.ends = al_arc_ends(E.ag, E.af, E.bg, E.bf, S.dtau);
     S.tan1 = AL_R(0.0);
     S.x1 = AL_R(0.0);
     S.beside = al_arc_near_end(E, S.tan1, S.x1);
@@ -332,7 +317,7 @@ real al_peak_edge_term(AlEdgeFrame E, AlArcShared S, real k, bool far_edge) {
         F.gmax = s2 > AL_R(1e-30) ? -al_expm1(k * lc) / s2 : AL_R(0.5) * k;
         F.gmin = AL_R(1.0);
     }
-    real fit = al_peak_integral(S.ends, S.ta, dtau, F);
+    real fit = al_peak_integral(E.ag, E.af, E.bg, E.bf, S.ta, dtau, F);
     if (!far_edge || !S.beside) return fit;
     // g = x^k / (1 - x^2); -d log g = k tan + 2 x^2 tan / (1 - x^2).
     real g1 = al_exp(k * S.lx1) * S.inv_omx2;
