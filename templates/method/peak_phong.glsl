@@ -76,8 +76,8 @@
 // (ag bf - af bg)(ag bg - a af bf): one quotient and one atan2 fewer than the textbook form
 // (ggx ellipsoid 26 869 -> 26 049 cycles a wave, navi21). Computing the ends' products once
 // per arc instead (they do not depend on a, and GGX fits in a loop over three lobes) took
-// ggx ellipsoid to 24 825 but blinn's and beckmann's curved ellipsoids to 176 VGPRs and 2
-// waves in ACO's model (22 029 -> 28 569 cycles a wave): written as here, each call forms
+// ggx ellipsoid to 24 825 but blinn's curved ellipsoids from 168 to 176 VGPRs, 3 to 2 waves
+// in ACO's model (disk 22 029 -> 28 569 cycles a wave): written as here, each call forms
 // them afresh and none lives across the fit.
 real al_ellipse_q_at(real ag, real af, real bg, real bf, real dtau, real a, bool squared) {
     real sa = sqrt(a);
