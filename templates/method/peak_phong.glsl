@@ -261,8 +261,8 @@ struct AlArcShared {
     bool beside;   // the foot lies outside the arc (al_arc_near_end); then, at the nearer end:
     real tan1;     // tan(tau_1)
     real x1, lx1;  // x and log x
-    real omx2;     // 1 - x^2 = s^2 + c^2 sin^2(tau_1)
-    real inv_omx2, lambda0;  // 1 / omx2 and 2 x^2 tan(tau_1) / omx2 (al_peak_edge_term's tail)
+    real inv_omx2; // 1 / (1 - x^2), 1 - x^2 = s^2 + c^2 sin^2(tau_1)
+    real lambda0;  // 2 x^2 tan(tau_1) / (1 - x^2) (al_peak_edge_term's tail)
 };
 AlArcShared al_arc_shared(AlEdgeFrame E) {
     AlArcShared S;
@@ -274,8 +274,7 @@ AlArcShared al_arc_shared(AlEdgeFrame E) {
     S.x1 = AL_R(0.0);
     S.beside = al_arc_near_end(E, S.tan1, S.x1);
     real sin2 = S.tan1 * S.tan1 / (AL_R(1.0) + S.tan1 * S.tan1);
-    S.omx2 = S.s2 + (AL_R(1.0) - S.s2) * sin2;
-    S.inv_omx2 = AL_R(1.0) / S.omx2;
+    S.inv_omx2 = AL_R(1.0) / (S.s2 + (AL_R(1.0) - S.s2) * sin2);
     S.lambda0 = AL_R(2.0) * S.x1 * S.x1 * S.tan1 * S.inv_omx2;
     S.lx1 = al_log(max(S.x1, AL_R(1e-30)));
     return S;
