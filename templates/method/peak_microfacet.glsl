@@ -21,8 +21,8 @@
 // GPU cost (navi21, `arealight gpu-cost`, the validation kernel, polygon, against the
 // point light's 498-573; with AL_FAST_ARC, common/common.glsl, the one-lobe loop unrolled
 // and each arc's shared terms once, 2026-12-06): lorentz 15 525 / 15 530 / 20 360 (blinn /
-// beckmann / ggx; 27-41x), pearson 17 620 / 17 625 / 24 549 (31-49x), ellipsoid 17 813 /
-// 17 819 / 24 937 (31-50.1x).
+// beckmann / ggx; 27-41x), pearson 17 620 / 17 625 / 24 549 (31-49x), ellipsoid 17 783 /
+// 17 788 / 24 876 (31-49.95x).
 //
 // The paper's formulas, checked numerically (the copy we read garbles some):
 // - eq. 23: int D_Blinn dh = (N+2)/(2 pi) int (n.h)^N dh = (N+2)/(N+1) mu_N. As printed.
