@@ -40,6 +40,7 @@ LtcCell ltc_lookup(const LtcTable& t, double param, double cos_theta_v) {
     c.d = mix(&LtcCell::d);
     c.amp_f0 = mix(&LtcCell::amp_f0);
     c.amp_one = mix(&LtcCell::amp_one);
+    c.kappa = mix(&LtcCell::kappa);
     c.error = mix(&LtcCell::error);
     return c;
 }
@@ -76,7 +77,17 @@ bool ltc_polygon_case(const LtcTable& t, const Case& c, double& specular, double
     minv.m[1][0] = 0, minv.m[1][1] = cell.c, minv.m[1][2] = 0;
     minv.m[2][0] = cell.d, minv.m[2][1] = 0, minv.m[2][2] = 1;
     const double f0 = t.dist == Distribution::Phong ? 1.0 : c.material.f0;
-    specular = (f0 * cell.amp_f0 + cell.amp_one) * ltc_polygon_integral(minv, local);
+    double integral = ltc_polygon_integral(minv, local);
+    if (cell.kappa != 0) {
+        // The second lobe (ltc_table.hpp): Minv's first two rows over s.
+        for (int k = 0; k < 3; ++k) {
+            minv.m[0][k] /= kLtcSecondLobeWidth;
+            minv.m[1][k] /= kLtcSecondLobeWidth;
+        }
+        integral += cell.kappa * ltc_polygon_integral(minv, local);
+    }
+    // The kernel is negative in its far tail (K < 0): a light there gets 0, as in the shader.
+    specular = (f0 * cell.amp_f0 + cell.amp_one) * std::max(integral, 0.0);
     return true;
 }
 

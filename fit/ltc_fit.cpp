@@ -6,7 +6,19 @@
 // since A and B make a light filling the hemisphere exact and the horizon clips both, so the
 // LTC's mass below the horizon is free.
 //
-// Fit metric, in two phases per cell:
+// Two lobes (Phong, Blinn, Beckmann; include/arealight/ltc_table.hpp): h is the LTC of the
+// kernel D_o + K D_s, D_s the clamped cosine s = 1.2 times wider in x and y, normalised over
+// z > 0 the same way. One transformed cosine has a power-law tail, as GGX's lobe has; these
+// lobes' tails are Gaussian, and one LTC fitted core or tail but not both (phase 2's error
+// per cell, median / p95: blinn 0.029 / 0.053, phong 0.045, against GGX's 0.0047). With K
+// near -0.75 the kernel is a sharpened cosine (D_o minus a multiple of its width
+// derivative), whose tail falls faster: blinn 0.009 / 0.015. A prototype over free s and K
+// put s at 1.17-1.22 for every cell it tried, so s is fixed and K, a fifth parameter, is the
+// amplitude texture's spare channel. K in [-0.95, 0]: allowed up to 3, Nelder-Mead from
+// K = -0.5 ran up a flat valley to the bound in half the cells of an 8 x 8 blinn table, at
+// larger errors (e.g. 0.041 there against 0.0079 with K <= 0).
+//
+// Fit metric, in two phases per cell (three with two lobes):
 // 1. Heitz et al. 2016's L3 distance, integral over z > 0 of |g - h|^3 dw, estimated with
 //    multiple importance sampling (balance heuristic) from 32 x 32 stratified samples of
 //    the BRDF (fixed per cell) and 32 x 32 of the current LTC (fixed uniforms). It puts the
@@ -26,8 +38,15 @@
 //    factors of 2.2, 1.8, 1.6 in alpha and the LTC's widths (~1 / alpha) interpolate badly,
 //    phase 2 adds the same metric for the LTC the shader interpolates halfway to the
 //    neighbours already fitted, (i + 1, j) and (i, j - 1), for the lobe there: the cell
-//    trades some accuracy at its node for the table's accuracy between nodes.
-// The `error` of a cell is sqrt of phase 2's metric at the cell alone.
+//    trades some accuracy at its node for the table's accuracy between nodes. Two-lobe
+//    tables do so in every cell: fitted at their own parameters, the blinn cells of the
+//    public polygon cases score specular relL2 0.046 / 0.090 / 0.013 (typical / horizon /
+//    glossy), but a table fitted cell by cell jumped between neighbours (the frame angle
+//    from 72 to 89 degrees in one step near grazing views) and its bilinear lookup scored
+//    0.081 / 0.13 / 0.050.
+// 3. (Two lobes.) Phase 2's metric over the LTC and K together, from phase 2's LTC and
+//    the neighbour's K.
+// The `error` of a cell is sqrt of the last phase's metric at the cell alone.
 //
 // Measured with arealight-ltc-check (fit/ltc_check.cpp: the shader's computation in double
 // precision) against shared/validation and against larger sets of the same kinds (500 GGX
@@ -95,8 +114,23 @@ constexpr double kThetaMargin = 0.2;  // |theta| <= theta_v + this
 constexpr double kThetaLimit = 1.5607;  // and < 89.4 degrees
 constexpr int kInterpolatedColumns = 4;  // cells fitted for interpolation too (i < this)
 
+// Whether cell (i, .) is also fitted for interpolation: the smallest roughnesses, and every
+// cell of a two-lobe table, whose fits are otherwise free to jump between neighbours.
+bool fitted_for_interpolation(Distribution d, int i) {
+    return i < kInterpolatedColumns || ltc_two_lobes(d);
+}
+// Phase 3 (two lobes): K's bounds, its start where no neighbour has one, and Nelder-Mead's
+// first step in it. D_s / D_o runs from 1 / s^2 on the axis to s^2 at the horizon, so the
+// kernel is positive in its core for K > -s^2 and everywhere for K >= -1 / s^2 = -0.69;
+// the fits sit at -0.75 to -0.78, negative beyond 71 degrees from the cosine's axis (the
+// LTC's far tail; the shader floors the result at 0). Bounded at -1 / s^2, the blinn cells
+// of the public polygon cases, each fitted at its own parameters, scored specular relL2
+// 0.100 / 0.16 / 0.021 (typical / horizon / glossy) against 0.046 / 0.090 / 0.013.
+constexpr double kKappaMin = -0.95, kKappaMax = 0.0, kKappaStart = -0.75, kKappaStep = 0.1;
+
 struct Param {
     double theta = 0, m11 = 1, m22 = 1, m13 = 0;
+    double kappa = 0;  // the second lobe's weight K (ltc_table.hpp)
 };
 
 LtcCell cell_of(const Param& p) {
@@ -106,6 +140,7 @@ LtcCell cell_of(const Param& p) {
     c.b = -(t + p.m13) / p.m11;
     c.c = 1 / (p.m22 * ct);
     c.d = t;
+    c.kappa = p.kappa;
     return c;
 }
 
@@ -116,6 +151,7 @@ Param param_of(const LtcCell& c) {
     p.m22 = 1 / (c.c * ct);
     p.m11 = (1 + c.d * c.d) / (c.a - c.b * c.d);
     p.m13 = -c.d - c.b * p.m11;
+    p.kappa = c.kappa;
     return p;
 }
 
@@ -205,6 +241,23 @@ V3 rotate_from(V3 c, double theta, double phi) {
     return normalize(std::cos(theta) * c + (st * std::cos(phi)) * x + (st * std::sin(phi)) * y);
 }
 
+// The lobe the shader integrates for a cell (include/arealight/ltc_table.hpp): its LTC,
+// plus K times the LTC of diag(1 / s, 1 / s, 1) Minv, the same lobe s times wider.
+struct Lobe {
+    LtcDistribution l1, l2;
+    double kappa;
+    explicit Lobe(const LtcCell& c)
+        : l1(LtcDistribution::from_cell(c.a, c.b, c.c, c.d)),
+          l2(LtcDistribution::from_cell(c.a / kLtcSecondLobeWidth, c.b / kLtcSecondLobeWidth,
+                                        c.c / kLtcSecondLobeWidth, c.d)),
+          kappa(c.kappa) {}
+    double eval(V3 w) const { return kappa == 0 ? l1.eval(w) : l1.eval(w) + kappa * l2.eval(w); }
+    double hemisphere_integral() const {
+        const double h1 = l1.hemisphere_integral();
+        return kappa == 0 ? h1 : h1 + kappa * l2.hemisphere_integral();
+    }
+};
+
 // Phase 2's metric (see the top of the file): relative L2 error of cap integrals.
 class RegionMetric {
   public:
@@ -275,12 +328,13 @@ class RegionMetric {
     }
 
     // sum_k (integral over cap k of g - h)^2 / sum_k (integral over cap k of g)^2
-    double operator()(const LtcDistribution& ltc) const {
-        const double hn = ltc.hemisphere_integral();
+    double operator()(const LtcCell& cell) const {
+        const Lobe lobe(cell);
+        const double hn = lobe.hemisphere_integral();
         if (!(hn > 1e-12) || !(norm2_ > 0)) return std::numeric_limits<double>::max();
         thread_local std::vector<double> d;
         d.resize(w_.size());
-        for (std::size_t s = 0; s < w_.size(); ++s) d[s] = (g_[s] - ltc.eval(w_[s]) / hn) * weight_[s];
+        for (std::size_t s = 0; s < w_.size(); ++s) d[s] = (g_[s] - lobe.eval(w_[s]) / hn) * weight_[s];
         double e = 0;
         for (const auto& cap : caps_) {
             double x = 0;
@@ -301,10 +355,14 @@ struct Problem {
     std::function<double(const LtcCell&)> metric;
     Param start;
     bool isotropic;
+    bool fit_kappa = false;          // phase 3: K is the last parameter
     double theta_max = kThetaLimit;  // |theta| bound
+
+    unsigned dimension() const { return (isotropic ? 1u : 4u) + (fit_kappa ? 1u : 0u); }
 
     Param decode(const double* x) const {
         Param p;
+        p.kappa = fit_kappa ? start.kappa + x[dimension() - 1] : start.kappa;
         if (isotropic) {
             p.m11 = p.m22 = start.m11 * std::exp(x[0]);
             return p;
@@ -321,7 +379,8 @@ double objective(const std::vector<double>& x, std::vector<double>&, void* data)
     auto* pr = static_cast<Problem*>(data);
     const Param p = pr->decode(x.data());
     if (!(std::abs(p.theta) < pr->theta_max) || !(p.m11 > 1e-9) || !(p.m22 > 1e-9) ||
-        !(p.m11 < 1e6) || !(p.m22 < 1e6) || !std::isfinite(p.m13))
+        !(p.m11 < 1e6) || !(p.m22 < 1e6) || !std::isfinite(p.m13) || !(p.kappa >= kKappaMin) ||
+        !(p.kappa <= kKappaMax))
         return 1e300;
     const LtcCell c = cell_of(p);
     if (!(c.a > 0) || !(c.a - c.b * c.d > 0)) return 1e300;
@@ -330,10 +389,11 @@ double objective(const std::vector<double>& x, std::vector<double>&, void* data)
 }
 
 Param run_nelder_mead(Problem& pr, double step_size) {
-    const unsigned n = pr.isotropic ? 1 : 4;
+    const unsigned n = pr.dimension();
     nlopt::opt opt(nlopt::LN_NELDERMEAD, n);
     opt.set_min_objective(objective, &pr);
     std::vector<double> x(n, 0.0), step(n, step_size);
+    if (pr.fit_kappa) step[n - 1] = kKappaStep;
     opt.set_initial_step(step);
     opt.set_xtol_abs(1e-5);
     opt.set_ftol_rel(1e-7);
@@ -377,6 +437,7 @@ LtcCell halfway(const LtcCell& x, const LtcCell& y) {
     m.b = 0.5 * (x.b + y.b);
     m.c = 0.5 * (x.c + y.c);
     m.d = 0.5 * (x.d + y.d);
+    m.kappa = 0.5 * (x.kappa + y.kappa);
     return m;
 }
 
@@ -411,6 +472,7 @@ LtcCell fit_lobe(Distribution d, double alpha, double cos_v, const LtcCell* star
     pr.isotropic = isotropic;
     if (start) {
         pr.start = param_of(*start);
+        pr.start.kappa = 0;
     } else {
         const V3 avg = fitter.average_direction();
         pr.start.theta = std::atan2(avg.x, avg.z);
@@ -446,17 +508,27 @@ LtcCell fit_lobe(Distribution d, double alpha, double cos_v, const LtcCell* star
     }
     Problem pr2 = pr;
     pr2.metric = [&](const LtcCell& c) {
-        double e = region(ltc_of(c));
-        if (mid_u) e += mid_u->region(ltc_of(halfway(c, *nb->next_u)));
-        if (mid_w) e += mid_w->region(ltc_of(halfway(c, *nb->prev_w)));
+        double e = region(c);
+        if (mid_u) e += mid_u->region(halfway(c, *nb->next_u));
+        if (mid_w) e += mid_w->region(halfway(c, *nb->prev_w));
         return e;
     };
     pr2.start = p;
     p = run_nelder_mead(pr2, 0.05);
 
+    // Phase 3 (two lobes): the same metric over the LTC and K together, K from the
+    // neighbour's.
+    if (ltc_two_lobes(d)) {
+        Problem pr3 = pr2;
+        pr3.fit_kappa = true;
+        pr3.start = p;
+        pr3.start.kappa =
+            start && start->kappa != 0 ? std::clamp(start->kappa, kKappaMin, kKappaMax) : kKappaStart;
+        p = run_nelder_mead(pr3, 0.05);
+    }
+
     LtcCell cell = cell_of(p);
-    const LtcDistribution ltc = ltc_of(cell);
-    const double hn = ltc.hemisphere_integral();
+    const double hn = Lobe(cell).hemisphere_integral();
     if (d == Distribution::Phong) {
         cell.amp_f0 = mom.total / hn;
         cell.amp_one = 0;
@@ -464,9 +536,9 @@ LtcCell fit_lobe(Distribution d, double alpha, double cos_v, const LtcCell* star
         cell.amp_f0 = (mom.total - mom.schlick) / hn;
         cell.amp_one = mom.schlick / hn;
     }
-    cell.error = std::sqrt(region(ltc));
+    cell.error = std::sqrt(region(cell));
     // -0 would print as "-0".
-    cell.a += 0.0, cell.b += 0.0, cell.c += 0.0, cell.d += 0.0;
+    cell.a += 0.0, cell.b += 0.0, cell.c += 0.0, cell.d += 0.0, cell.kappa += 0.0;
     return cell;
 }
 
@@ -480,7 +552,7 @@ LtcCell fit_ltc_cell(Distribution d, int size, int i, int j, const LtcCell* star
                      const LtcCell* next_u, const LtcCell* prev_w) {
     Neighbours nb;
     nb.size = size, nb.i = i, nb.j = j;
-    if (i < kInterpolatedColumns) {
+    if (fitted_for_interpolation(d, i)) {
         nb.next_u = i + 1 < size ? next_u : nullptr;
         nb.prev_w = j > 0 ? prev_w : nullptr;
     }
@@ -496,7 +568,7 @@ LtcCell ltcfit::fit_ltc_at(Distribution d, double alpha, double cos_v, const Ltc
 double ltcfit::ltc_fit_error(Distribution d, double alpha, double cos_v, const LtcCell& c) {
     const BrdfLobe lobe(d, alpha, cos_v);
     const RegionMetric region(lobe, lobe.hemisphere_moments().total, ltc_of(c));
-    return std::sqrt(region(ltc_of(c)));
+    return std::sqrt(region(c));
 }
 
 std::optional<LtcTable> fit_ltc(Distribution d, const LtcFitOptions& opt,
@@ -516,7 +588,9 @@ std::optional<LtcTable> fit_ltc(Distribution d, const LtcFitOptions& opt,
     // Each cell waits for the cells it starts from or is fitted against: (i, j - 1) and, on
     // the row j = 0 and in the columns fitted for interpolation, (i + 1, j). A cell's
     // result depends only on those, so the table does not depend on the scheduling.
-    auto needs_u = [&](int i, int j) { return i + 1 < n && (j == 0 || i < kInterpolatedColumns); };
+    auto needs_u = [&](int i, int j) {
+        return i + 1 < n && (j == 0 || fitted_for_interpolation(d, i));
+    };
     const int total = n * n;
     std::vector<int> missing(static_cast<std::size_t>(total), 0);
     std::vector<int> ready;
@@ -575,7 +649,7 @@ std::optional<LtcTable> fit_ltc(Distribution d, const LtcFitOptions& opt,
 
     for (int k = 0; k < total; ++k) {
         const LtcCell& c = t.cells[k];
-        const double v[] = {c.a, c.b, c.c, c.d, c.amp_f0, c.amp_one, c.error};
+        const double v[] = {c.a, c.b, c.c, c.d, c.amp_f0, c.amp_one, c.kappa, c.error};
         bool ok = c.a > 0 && c.c > 0;
         for (double x : v) ok = ok && std::isfinite(x);
         if (!ok) {

@@ -6,8 +6,8 @@
 //   # size 64
 //   # rho_min 0.031622776601683791
 //   # rho_max 1
-//   # columns i j a b c d A B error
-//   0 0 a b c d A B error        (size * size lines, i fastest)
+//   # columns i j a b c d A B K error
+//   0 0 a b c d A B K error      (size * size lines, i fastest; K = 0: one lobe)
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -67,6 +67,8 @@ void ltc_rho_range(Distribution d, double& rho_min, double& rho_max) {
     }
 }
 
+bool ltc_two_lobes(Distribution d) { return d != Distribution::Ggx; }
+
 double ltc_cell_rho(const LtcTable& t, int i) {
     const double u = t.size > 1 ? static_cast<double>(i) / (t.size - 1) : 0.0;
     return t.rho_min + u * (t.rho_max - t.rho_min);
@@ -86,14 +88,14 @@ std::string format_ltc_table(const LtcTable& t) {
     s += "\n# dist ";
     s += to_string(t.dist);
     std::snprintf(buf, sizeof buf,
-                  "\n# size %d\n# rho_min %.17g\n# rho_max %.17g\n# columns i j a b c d A B error\n",
+                  "\n# size %d\n# rho_min %.17g\n# rho_max %.17g\n# columns i j a b c d A B K error\n",
                   t.size, t.rho_min, t.rho_max);
     s += buf;
     for (int j = 0; j < t.size; ++j) {
         for (int i = 0; i < t.size; ++i) {
             const LtcCell& c = t.at(i, j);
-            std::snprintf(buf, sizeof buf, "%d %d %.9g %.9g %.9g %.9g %.9g %.9g %.4g\n", i, j, c.a,
-                          c.b, c.c, c.d, c.amp_f0, c.amp_one, c.error);
+            std::snprintf(buf, sizeof buf, "%d %d %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.4g\n", i, j,
+                          c.a, c.b, c.c, c.d, c.amp_f0, c.amp_one, c.kappa, c.error);
             s += buf;
         }
     }
@@ -173,26 +175,29 @@ std::optional<LtcTable> parse_ltc_table(const std::string& text, const std::stri
         if (read >= expected)
             return fail("more than " + std::to_string(expected) + " cells for size " +
                         std::to_string(t.size));
-        if (f.size() != 9)
-            return fail("expected 9 fields 'i j a b c d A B error', found " +
+        if (f.size() != 10)
+            return fail("expected 10 fields 'i j a b c d A B K error', found " +
                         std::to_string(f.size()));
         const int want_i = static_cast<int>(read % t.size), want_j = static_cast<int>(read / t.size);
         int i, j;
         if (!parse_int(f[0], i) || !parse_int(f[1], j) || i != want_i || j != want_j)
             return fail("expected cell '" + std::to_string(want_i) + " " + std::to_string(want_j) +
                         "', found '" + std::string(f[0]) + " " + std::string(f[1]) + "'");
-        static const char* names[] = {"a", "b", "c", "d", "A", "B", "error"};
-        double v[7];
-        for (int k = 0; k < 7; ++k) {
+        static const char* names[] = {"a", "b", "c", "d", "A", "B", "K", "error"};
+        double v[8];
+        for (int k = 0; k < 8; ++k) {
             if (!parse_double(f[2 + k], v[k]))
                 return fail(std::string("field '") + names[k] + "' is not a finite number: '" +
                             std::string(f[2 + k]) + "'");
         }
         if (!(v[0] > 0)) return fail("field 'a' must be > 0");
         if (!(v[2] > 0)) return fail("field 'c' must be > 0");
+        if (v[6] != 0 && !ltc_two_lobes(t.dist))
+            return fail("field 'K' must be 0: " + std::string(to_string(t.dist)) +
+                        "'s LTC has one lobe");
         LtcCell& c = t.cells[read++];
         c.a = v[0], c.b = v[1], c.c = v[2], c.d = v[3];
-        c.amp_f0 = v[4], c.amp_one = v[5], c.error = v[6];
+        c.amp_f0 = v[4], c.amp_one = v[5], c.kappa = v[6], c.error = v[7];
     }
     if (line_no < 2) return fail("not an LTC table: missing header");
     if (!have_dist) return fail("missing '# dist' line");

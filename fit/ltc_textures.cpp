@@ -33,7 +33,7 @@ std::vector<Texture2D> ltc_textures(const LtcTable& t) {
             float* a = tex[1].rgba.data() + k;
             a[0] = static_cast<float>(c.amp_f0);
             a[1] = static_cast<float>(c.amp_one);
-            a[2] = 0.0f;
+            a[2] = static_cast<float>(c.kappa);
             a[3] = static_cast<float>(s);
         }
     }

@@ -50,12 +50,17 @@ constexpr double kMotionTol = 1e-3;
 // bar is relative to a floor of 1e-2.
 constexpr double kMotionFp16Tol = 2.5e-2;
 constexpr double kMotionFp16Floor = 1e-2;
-// Against the oracle on these cases, for the GGX fits (issue 23's acceptance): specular
-// relL2 and the largest relative error of a case above the floor. Measured after the
-// fix: polygon 3.1e-3 (worst case 0.14), disk 5.1e-3 (0.10), sphere 4.1e-3 (0.20),
-// ellipsoid 1.8e-2 (0.45) on the CPU mirror.
-constexpr double kGgxSpecularRelL2 = 5e-2;
+// Against the oracle on these cases, every LTC (issue 23's acceptance): specular relL2
+// and the largest relative error of a case above the floor. Measured after the frame
+// fix, GGX: polygon 3.1e-3 (worst case 0.14), disk 5.1e-3 (0.10), sphere 4.1e-3 (0.20),
+// ellipsoid 1.8e-2 (0.45) on the CPU mirror; the one-lobe Phong polygon LTC was at
+// 5.8e-2. The two-lobe tables (method/ltc.glsl) hold every variant's relL2 under the bar;
+// their curved lights do not hold every case within 50%: lobes beside a small disc,
+// sphere or ellipsoid at specular 1e-3 to 1e-2 (measured worst: blinn sphere 2.64, phong
+// disk 0.97, phong ellipsoid 0.82), a bar of its own.
+constexpr double kSpecularRelL2 = 5e-2;
 constexpr double kCaseOffTol = 0.5;
+constexpr double kCaseOffTwoLobeCurvedTol = 3.0;
 // diffuse is exact Lambert (the polygon's or the ellipse cone's form factor) in fp32.
 constexpr double kDiffuseTol = 1e-3;
 
@@ -113,7 +118,10 @@ TEST_CASE("ltc: exactly degenerate inputs against the oracle", "[shading][vulkan
     std::map<std::string, CaseResult> ref;
     for (const auto& c : cases.cases) ref[c.id] = reference_case(c, {});
     for (const char* name : kLtcVariants) {
-        const bool ggx = std::string(name).find("dist=ggx") != std::string::npos;
+        const std::string s(name);
+        const bool two_lobe_curved = s.find("dist=ggx") == std::string::npos &&
+                                     s.find("light=polygon") == std::string::npos;
+        const double case_tol = two_lobe_curved ? kCaseOffTwoLobeCurvedTol : kCaseOffTol;
         for (Backend b : {Backend::Cpu, Backend::Vulkan}) {
             const ResultSet out = run(b, name, cases);
             REQUIRE(out.results.size() >= 5);
@@ -124,13 +132,11 @@ TEST_CASE("ltc: exactly degenerate inputs against the oracle", "[shading][vulkan
                           << " oracle " << *y.diffuse << ", specular " << *r.specular
                           << " oracle " << *y.specular);
                 CHECK(rel_err(*r.diffuse, *y.diffuse) <= kDiffuseTol);
-                if (ggx) CHECK(rel_err(*r.specular, *y.specular) <= kCaseOffTol);
+                CHECK(rel_err(*r.specular, *y.specular) <= case_tol);
             }
-            if (ggx) {
-                const double e = rel_l2(out, ref, &CaseResult::specular);
-                INFO(name << " " << to_string(b) << ": specular relL2 " << e);
-                CHECK(e <= kGgxSpecularRelL2);
-            }
+            const double e = rel_l2(out, ref, &CaseResult::specular);
+            INFO(name << " " << to_string(b) << ": specular relL2 " << e);
+            CHECK(e <= kSpecularRelL2);
         }
     }
 }

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "arealight/evaluator.hpp"
+#include "arealight/ltc_table.hpp"
 #include "arealight/reference.hpp"
 #include "eval_support.hpp"
 #include "extreme_lights.hpp"
@@ -186,11 +187,14 @@ TEST_CASE("ltc curved: specular is the polygon LTC's over the light's 256-gon",
     // such cases differed by 2.9%, with 256 by 0.17%, with 1024 by 0.015%, converging to
     // the ellipse. No f0 (F = 1): the GGX Fresnel correction depends on the light's
     // direction in the lobe, which does not add up over pieces. Measured (disks and
-    // spheres, 20 cases each, every dist): relL2 5.6e-4 at most, largest case 1.7e-3
-    // (floor 1e-3).
+    // spheres, 20 cases each): relL2 5.6e-4 at most, largest case 1.7e-3 (floor 1e-3).
+    // GGX only: the two-lobe kernel of the other tables (method/ltc.glsl) is negative in
+    // its far tail and every output is floored at 0, so a fan's pieces in that tail add 0
+    // where their signed integrals would subtract (their sums came out 0.6-1.2% above the
+    // disc's); the kernel's own integral is additive, the floored output is not.
     constexpr double kFanRelL2 = 1e-3;
     constexpr double kFanCase = 3e-3;
-    for (Distribution d : kAllDists) {
+    for (Distribution d : {Distribution::Ggx}) {
         for (LightType l : {LightType::Disk, LightType::Sphere}) {
             const CaseSet cases =
                 random_curved(6200 + 10 * static_cast<int>(d) + static_cast<int>(l), 20, d, l,
@@ -284,9 +288,12 @@ TEST_CASE("ltc curved: diffuse closed forms (sphere irradiance, disc on its axis
 TEST_CASE("ltc curved: one light as a sphere, an equal-axes ellipsoid and its silhouette disc",
           "[shading][ltc]") {
     // All three reduce to the same ellipse record (templates/library_*.glsl), up to the
-    // frame each builds: the same values within fp32 rounding (measured: 3.2e-5 at most,
-    // floor 1e-3).
+    // frame each builds: the same values within fp32 rounding (measured: 3.2e-5 at most
+    // with one-lobe tables, floor 1e-3). The two-lobe tables' specular is a difference,
+    // the LTC's form factor less about 0.76 of the wider one's, which magnifies that
+    // rounding: TWO_LOBE_SAME.
     constexpr double kSameLightTol = 1e-4;
+    constexpr double kSameLightTwoLobesTol = 2e-3;
     std::mt19937_64 rng(6300);
     for (Distribution d : kAllDists) {
         const CaseSet spheres = random_curved(6300 + static_cast<int>(d), 20, d,
@@ -320,8 +327,9 @@ TEST_CASE("ltc curved: one light as a sphere, an equal-axes ellipsoid and its si
                               << *y.specular << " / " << *z.specular);
             CHECK(rel_err(*y.diffuse, *x.diffuse) <= kSameLightTol);
             CHECK(rel_err(*z.diffuse, *x.diffuse) <= kSameLightTol);
-            CHECK(rel_err(*y.specular, *x.specular) <= kSameLightTol);
-            CHECK(rel_err(*z.specular, *x.specular) <= kSameLightTol);
+            const double spec_tol = ltc_two_lobes(d) ? kSameLightTwoLobesTol : kSameLightTol;
+            CHECK(rel_err(*y.specular, *x.specular) <= spec_tol);
+            CHECK(rel_err(*z.specular, *x.specular) <= spec_tol);
         }
     }
 }

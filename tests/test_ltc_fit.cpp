@@ -78,12 +78,19 @@ double hemisphere_integral(F f, int n) {
 }
 
 // The LTC density of ltc_table.hpp: D_o(Minv w / |Minv w|) |det Minv| / |Minv w|^3.
-double ltc_density(const LtcCell& c, glm::dvec3 w) {
-    const glm::dvec3 o(c.a * w.x + c.b * w.z, c.c * w.y, c.d * w.x + w.z);
+double ltc_density(double a, double b, double c, double d, glm::dvec3 w) {
+    const glm::dvec3 o(a * w.x + b * w.z, c * w.y, d * w.x + w.z);
     const double l = glm::length(o);
     if (o.z <= 0) return 0;
-    const double det = c.c * (c.a - c.b * c.d);
+    const double det = c * (a - b * d);
     return o.z / l / kPi * std::abs(det) / (l * l * l);
+}
+
+// The cell's lobe: the LTC plus K times the LTC of diag(1 / s, 1 / s, 1) Minv.
+double lobe_density(const LtcCell& c, glm::dvec3 w) {
+    const double s = kLtcSecondLobeWidth;
+    return ltc_density(c.a, c.b, c.c, c.d, w) +
+           c.kappa * ltc_density(c.a / s, c.b / s, c.c / s, c.d, w);
 }
 
 // Refits cell (i, j) from its committed neighbours as fit_ltc does.
@@ -98,14 +105,16 @@ void check_refit(Distribution d, int i, int j) {
     const double amp = want.amp_f0 + want.amp_one;
     INFO(to_string(d) << " cell (" << i << ", " << j << "): refit a b c d A B = " << got.a << " "
                       << got.b << " " << got.c << " " << got.d << " " << got.amp_f0 << " "
-                      << got.amp_one << "; committed " << want.a << " " << want.b << " "
-                      << want.c << " " << want.d << " " << want.amp_f0 << " " << want.amp_one);
+                      << got.amp_one << " K " << got.kappa << "; committed " << want.a << " "
+                      << want.b << " " << want.c << " " << want.d << " " << want.amp_f0 << " "
+                      << want.amp_one << " K " << want.kappa);
     CHECK(std::abs(got.a - want.a) / scale < kRefitTol);
     CHECK(std::abs(got.b - want.b) / scale < kRefitTol);
     CHECK(std::abs(got.c - want.c) / scale < kRefitTol);
     CHECK(std::abs(got.d - want.d) < kRefitTol * std::max(1.0, std::abs(want.d)));
     CHECK(std::abs(got.amp_f0 - want.amp_f0) / amp < kRefitTol);
     CHECK(std::abs(got.amp_one - want.amp_one) / amp < kRefitTol);
+    CHECK(std::abs(got.kappa - want.kappa) < kRefitTol);
 }
 
 }  // namespace
@@ -118,6 +127,7 @@ TEST_CASE("LTC: committed cells are reproduced by a refit from their neighbour",
     check_refit(Distribution::Beckmann, 30, 33);
     check_refit(Distribution::Blinn, 12, 45);
     check_refit(Distribution::Phong, 40, 0);
+    check_refit(Distribution::Phong, 25, 30);
 }
 
 TEST_CASE("LTC: the builtin tables are complete, finite and name their command", "[ltc]") {
@@ -139,11 +149,15 @@ TEST_CASE("LTC: the builtin tables are complete, finite and name their command",
             const bool ok = std::isfinite(c.a) && std::isfinite(c.b) && std::isfinite(c.c) &&
                             std::isfinite(c.d) && std::isfinite(c.amp_f0) &&
                             std::isfinite(c.amp_one) && c.a > 0 && c.c > 0 &&
-                            c.a - c.b * c.d > 0 && c.amp_f0 >= 0 && c.amp_one >= 0;
+                            c.a - c.b * c.d > 0 && c.amp_f0 >= 0 && c.amp_one >= 0 &&
+                            c.kappa >= -0.95 && c.kappa <= 0;
             bad += ok ? 0 : 1;
             if (d == Distribution::Phong) bad += c.amp_one == 0 ? 0 : 1;
+            if (!ltc_two_lobes(d)) bad += c.kappa == 0 ? 0 : 1;
         }
-        INFO("cells not finite, with a <= 0, c <= 0, det <= 0 or a negative amplitude: " << bad);
+        INFO("cells not finite, with a <= 0, c <= 0, det <= 0, a negative amplitude or K "
+             "outside [-0.95, 0] (0 for one lobe): "
+             << bad);
         CHECK(bad == 0);
         // The normal view is isotropic.
         for (int i = 0; i < t.size; ++i) {
@@ -188,9 +202,10 @@ TEST_CASE("LTC: amplitudes make a light filling the hemisphere exact", "[ltc]") 
         } else {
             brdf = hemisphere_integral([&](glm::dvec3 w) { return phong_f_cos(w, v, param); }, n);
         }
-        const double ltc = hemisphere_integral([&](glm::dvec3 w) { return ltc_density(c, w); }, n);
-        INFO(to_string(k.d) << " cell (" << k.i << ", " << k.j << "): integral of f cos "
-                            << brdf << ", (A + B) H_ltc " << (c.amp_f0 + c.amp_one) * ltc
+        const double ltc = hemisphere_integral([&](glm::dvec3 w) { return lobe_density(c, w); }, n);
+        INFO(to_string(k.d) << " cell (" << k.i << ", " << k.j << "), K " << c.kappa
+                            << ": integral of f cos " << brdf << ", (A + B) H_ltc "
+                            << (c.amp_f0 + c.amp_one) * ltc
                             << "; of x f cos " << brdf_x << ", B H_ltc " << c.amp_one * ltc);
         CHECK(std::abs((c.amp_f0 + c.amp_one) * ltc - brdf) / brdf < kMagnitudeTol);
         CHECK(std::abs(c.amp_one * ltc - brdf_x) / brdf < kMagnitudeTol);
@@ -243,9 +258,11 @@ TEST_CASE("LTC: sphere horizon form factor matches quadrature over the cap", "[l
 }
 
 TEST_CASE("LTC: textures hold the cells and the sphere table", "[ltc]") {
-    const LtcTable& t = builtin_ltc_table(Distribution::Ggx);
-    const auto& tex = builtin_ltc_textures(Distribution::Ggx);
-    REQUIRE(&tex == &builtin_ltc_textures(Distribution::Ggx));
+  for (Distribution dist : {Distribution::Ggx, Distribution::Beckmann}) {
+    INFO(to_string(dist));
+    const LtcTable& t = builtin_ltc_table(dist);
+    const auto& tex = builtin_ltc_textures(dist);
+    REQUIRE(&tex == &builtin_ltc_textures(dist));
     REQUIRE(tex.size() == 2);
     for (const auto& x : tex) {
         REQUIRE(x.width == 64);
@@ -262,7 +279,7 @@ TEST_CASE("LTC: textures hold the cells and the sphere table", "[ltc]") {
             CHECK(tex[0].rgba[k + 3] == static_cast<float>(c.d));
             CHECK(tex[1].rgba[k + 0] == static_cast<float>(c.amp_f0));
             CHECK(tex[1].rgba[k + 1] == static_cast<float>(c.amp_one));
-            CHECK(tex[1].rgba[k + 2] == 0.0f);
+            CHECK(tex[1].rgba[k + 2] == static_cast<float>(c.kappa));
             const double co = 2.0 * i / 63 - 1, w = j / 63.0;
             const double s = j == 0 ? std::max(co, 0.0)
                                     : sphere_horizon_form_factor(co, std::sqrt(w)) / w;
@@ -270,6 +287,7 @@ TEST_CASE("LTC: textures hold the cells and the sphere table", "[ltc]") {
             CHECK(tex[1].rgba[k + 3] == static_cast<float>(s));
         }
     }
+  }
 }
 
 TEST_CASE("LTC: the fit does not depend on the number of threads", "[ltc]") {
@@ -293,7 +311,7 @@ TEST_CASE("LTC: the table format round-trips and its errors name file and line",
     for (int k = 0; k < 9; ++k) {
         LtcCell c;
         c.a = 1.5 + k, c.b = -0.25 * k, c.c = 2 + k, c.d = 0.125 * k;
-        c.amp_f0 = 0.5, c.amp_one = 0.01 * k, c.error = 1e-3;
+        c.amp_f0 = 0.5, c.amp_one = 0.01 * k, c.kappa = -0.0625 * k, c.error = 1e-3;
         t.cells.push_back(c);
     }
     const std::string text = format_ltc_table(t);
@@ -319,10 +337,12 @@ TEST_CASE("LTC: the table format round-trips and its errors name file and line",
     const std::vector<Bad> bad = {
         {replace_line(1, "# some other file"), "x.txt:1:", "first line"},
         {replace_line(3, "# dist lambert"), "x.txt:3:", "unknown distribution"},
-        {replace_line(10, "2 0 nan 0 1 0 0.5 0 0"), "x.txt:10:", "field 'a'"},
-        {replace_line(11, "0 1 -1 0 1 0 0.5 0 0"), "x.txt:11:", "'a' must be > 0"},
-        {replace_line(12, "1 1 1 0 1 0 0.5"), "x.txt:12:", "9 fields"},
-        {replace_line(13, "1 1 1 0 1 0 0.5 0 0"), "x.txt:13:", "expected cell '2 1'"},
+        {replace_line(10, "2 0 nan 0 1 0 0.5 0 0 0"), "x.txt:10:", "field 'a'"},
+        {replace_line(11, "0 1 -1 0 1 0 0.5 0 0 0"), "x.txt:11:", "'a' must be > 0"},
+        {replace_line(12, "1 1 1 0 1 0 0.5 0 0"), "x.txt:12:", "10 fields"},
+        {replace_line(13, "1 1 1 0 1 0 0.5 0 0 0"), "x.txt:13:", "expected cell '2 1'"},
+        {replace_line(13, "2 1 1 0 1 0 0.5 0 inf 0"), "x.txt:13:", "field 'K'"},
+        {replace_line(3, "# dist ggx"), "x.txt:9:", "one lobe"},
         {replace_line(16, ""), "x.txt:", "expected 9 cells, found 8"},
         {replace_line(4, "# size 0"), "x.txt:4:", "size"},
     };

@@ -154,25 +154,30 @@ TEST_CASE("ltc table=fit: public GGX polygon cases, per set, both backends", "[s
     }
 }
 
-TEST_CASE("ltc: Fresnel in the magnitude: within 1.2x of the error without it",
+TEST_CASE("ltc: Fresnel in the magnitude: its error against the plain output's",
           "[shading][ltc]") {
     // The same 80 cases without f0 (F = 1) and with f0 on every case: a seeded f0 in
-    // [0, 1] (the issue's criterion: relL2 within 1.2x of the plain relL2), and 0.04 (a
+    // [0, 1] (an earlier issue's criterion, relL2 within 1.2x of the plain relL2, GGX's bar;
+    // the two-lobe tables' below), and 0.04 (a
     // dielectric). Fresnel also reweights the cases (F is small at normal views, near 1 at
     // grazing ones, where the LTC's own error is larger), so the test also checks the
     // channel against a second yardstick: the plain output scaled by the oracle's exact
     // per-case ratio ref_F / ref_1 (a perfect Fresnel channel on the same fit).
-    // Measured, random f0: relL2 / plain 1.15 (blinn), 1.18 (beckmann), 1.17 (ggx); to
-    // the yardstick 1.24, 1.05, 0.97. At f0 0.04, to the yardstick: 2.67, 1.37, 1.38
-    // (blinn's grazing lobes: its channel is the plain split sum, see method/ltc.glsl).
-    constexpr double kFresnelRatio = 1.2;
+    // Measured, random f0: relL2 / plain 1.17 (ggx); to the yardstick 0.97; at f0 0.04,
+    // to the yardstick 1.38. The two-lobe tables of blinn and beckmann (method/ltc.glsl)
+    // halved their plain error (0.0266 -> 0.0133, 0.0405 -> 0.0152) and left the error of
+    // their Fresnel channel, the plain split sum (GGX's correction doubles it for them):
+    // with random f0 relL2 0.0306 -> 0.0262 and 0.0476 -> 0.0317, at f0 0.04 0.0825 ->
+    // 0.0875 and 0.0820 -> 0.0789. So Fresnel is now most of their error: relL2 / plain
+    // 1.97 and 2.08, to the yardstick 2.06 and 1.65, at f0 0.04 5.3 and 2.4.
     struct FresnelBar {
         Distribution d;
         double random_f0, dielectric;  // bars on the ratio to the yardstick
+        double plain;                  // bar on relL2 with random f0 over relL2 without
     };
-    const FresnelBar bars[] = {{Distribution::Blinn, 1.3, 2.9},
-                               {Distribution::Beckmann, 1.2, 1.5},
-                               {Distribution::Ggx, 1.2, 1.5}};
+    const FresnelBar bars[] = {{Distribution::Blinn, 2.3, 5.8, 2.2},
+                               {Distribution::Beckmann, 1.8, 2.7, 2.3},
+                               {Distribution::Ggx, 1.2, 1.5, 1.2}};
     for (const FresnelBar& bar : bars) {
         const Distribution d = bar.d;
         const CaseSet plain_set = [&] {
@@ -210,7 +215,7 @@ TEST_CASE("ltc: Fresnel in the magnitude: within 1.2x of the error without it",
                       << ", plain output scaled by the exact F ratio " << e_scaled
                       << ", plain (F = 1) " << e_plain);
             CHECK(e <= (k == 0 ? bar.dielectric : bar.random_f0) * e_scaled);
-            if (k == 1) CHECK(e <= kFresnelRatio * e_plain);
+            if (k == 1) CHECK(e <= bar.plain * e_plain);
         }
     }
 }

@@ -16,11 +16,16 @@
 //   The shader samples at ((u, w) (size - 1) + 0.5) / size with linear filtering,
 //   so texel centres are exactly the fitted cells.
 // - Texture 0 (matrix): (a, b, c, d) per cell.
-// - Texture 1 (amplitude): (A, B, 0, S) per cell. Specular of a light region P is
-//   (f0 A + B) times the LTC's integral over P (phong: A, B = 0). A and B are the
+// - Texture 1 (amplitude): (A, B, K, S) per cell. Specular of a light region P is
+//   (f0 A + B) times the lobe's integral over P (phong: A, B = 0). The lobe is one
+//   LTC (GGX, K = 0) or, for the Gaussian-tailed lobes (phong, blinn, beckmann), the
+//   LTC of the kernel D_o + K D_s, D_s the clamped cosine widened by s =
+//   kLtcSecondLobeWidth in x and y: its integral over P is the LTC's plus K times that of
+//   Minv2 = diag(1 / s, 1 / s, 1) Minv (fit/ltc_fit.cpp: why). A and B are the
 //   f0 and 1 - f0 parts of the integral of f (n.w) over the hemisphere (Schlick F =
 //   f0 (1 - x) + x with x = (1 - h.v)^5), each divided by the LTC's own integral over
-//   the hemisphere, so that a light filling the hemisphere is exact. S is the
+//   the hemisphere (h1 + K h2 for two lobes), so that a light filling the hemisphere is
+//   exact. S is the
 //   sphere-proxy horizon table (seed 001): texel (i, j) holds I(cos omega, sigma) /
 //   sin^2 sigma for cos omega = 2 u - 1 and sin^2 sigma = w, the horizon-clipped
 //   form factor of a sphere of angular radius sigma at angle omega from n over its
@@ -38,10 +43,17 @@
 
 namespace arealight {
 
+// The second lobe's widening s (see above); the shader's AL_LTC_INV_S2 is 1 / s.
+constexpr double kLtcSecondLobeWidth = 1.2;
+
+// Whether a distribution's table fits the two-lobe kernel (K free) or one LTC (K = 0).
+bool ltc_two_lobes(Distribution d);
+
 // One fitted cell.
 struct LtcCell {
     double a = 1, b = 0, c = 1, d = 0;  // Minv, as above
     double amp_f0 = 1, amp_one = 0;     // A, B
+    double kappa = 0;                   // K
     double error = 0;                   // the fit metric at the optimum (for reports)
 };
 

@@ -25,7 +25,22 @@
 // al_ltc_fit_lookup) and the proxy by Snyder's formula: no texture, no sampler.
 // GPU cost (navi21, `arealight gpu-cost`, the validation kernel): GGX polygon default
 // 986 (1.98x its point light's 498; 2705 instructions, 96 VGPRs); table=fit 1910
-// (3.84x; 3576 instructions, 96 VGPRs).
+// (3.84x; 3576 instructions, 96 VGPRs). The two-lobe tables' second edge sum: blinn /
+// beckmann / phong polygon 1079 / 1075 / 1077 (1.88x / 1.94x / 2.36x; one lobe 949 / 945
+// / 947); their disk, sphere and ellipsoid +29-31% with horizon=clip, +19-21% with proxy.
+
+// Two lobes (include/arealight/ltc_table.hpp, fit/ltc_fit.cpp): a transformed clamped
+// cosine has a power-law tail, as GGX's lobe has, while the Phong, Blinn and Beckmann
+// lobes' tails are Gaussian; one LTC cannot fit their core and tail together (the fit's
+// error 0.03-0.05 against GGX's 0.005). Their tables hold the LTC of the kernel
+// D_o + K D_s, D_s the clamped cosine s = 1.2 times wider (K ~ -0.75: a sharpened
+// cosine): its integral over a region is the LTC's plus K times that of the region under
+// diag(1 / s, 1 / s, 1) Minv, the same transformed vertices with x and y over s; the
+// clipping to z >= 0 is the same. K is the amplitude texture's z.
+#ifndef AL_DIST_GGX
+#define AL_LTC_TWO_LOBES
+const real AL_LTC_INV_S = AL_R(0.83333333333333333);  // 1 / kLtcSecondLobeWidth
+#endif
 
 // Grid of the tables (include/arealight/ltc_table.hpp, ltc_rho_range in
 // fit/ltc_table.cpp): 64 x 64 cells; rho = sqrt(alpha) spans the contract's
@@ -151,6 +166,35 @@ void al_ltc_clip_edge(hvec3 a, hvec3 b, AL_INOUT(hvec3) sum, AL_INOUT(hvec3) exi
     }
     if (!ia && ib) entry_pt = q;
 }
+
+#ifndef AL_LIGHT_CURVED
+// One lobe's sums over a polygon, edge by edge (al_shade): its vector form factor times
+// 2 pi and, with horizon=clip, where the boundary leaves and re-enters z >= 0.
+struct AlLtcSum {
+    hvec3 ff;
+    hvec3 exit_pt;
+    hvec3 entry_pt;
+    bool has_exit;
+};
+
+AlLtcSum al_ltc_sum_init() {
+    AlLtcSum s;
+    s.ff = hvec3(0.0);
+    s.exit_pt = hvec3(0.0);
+    s.entry_pt = hvec3(0.0);
+    s.has_exit = false;
+    return s;
+}
+
+// The edge a -> b (transformed vertices): unclipped (proxy) or clipped.
+void al_ltc_sum_edge(hvec3 a, hvec3 b, AL_INOUT(AlLtcSum) s) {
+#ifdef AL_HORIZON_PROXY
+    s.ff += al_edge_ltc(a, b);
+#else
+    al_ltc_clip_edge(a, b, s.ff, s.exit_pt, s.entry_pt, s.has_exit);
+#endif
+}
+#endif
 
 #ifndef AL_LIGHT_CURVED
 // The same for the Lambert term in the working precision, exact, about n in the
@@ -308,6 +352,25 @@ real al_ltc_proxy_form(hvec3 vector_ff) {
     return form;
 }
 
+#ifndef AL_LIGHT_CURVED
+// A lobe's form factor of the polygon from its sums: the proxy's, or the clipped
+// polygon's after the closing arc exit -> entry on the horizon z = 0 (along +z, its sine
+// floored at 0, as for the Lambert term).
+// With horizon=clip the closing arc is added to s.ff, whose direction the GGX Fresnel
+// term reads (al_ltc_magnitude).
+real al_ltc_sum_form(AL_INOUT(AlLtcSum) s) {
+#ifdef AL_HORIZON_PROXY
+    return al_ltc_proxy_form(s.ff);
+#else
+    if (s.has_exit) {
+        hreal sz = max(cross(s.exit_pt, s.entry_pt).z, hreal(0.0));
+        s.ff.z += sz * al_edge_factor(dot(s.exit_pt, s.entry_pt), hvec3(hreal(0.0), hreal(0.0), sz));
+    }
+    return real(s.ff.z) / AL_TWO_PI;
+#endif
+}
+#endif
+
 // The lobe's magnitude for a light whose LTC-space vector form factor is vector_ff (any
 // scale; only its direction enters, GGX only), Schlick f0 (1: F = 1).
 real al_ltc_magnitude(AlLtc L, hvec3 vector_ff, real f0) {
@@ -363,16 +426,14 @@ vec4 al_shade(AlCase c) {
     real lambert = AL_R(0.0);
     rvec3 lx = rvec3(AL_R(0.0)), le = rvec3(AL_R(0.0));
     bool has_lx = false;
-    // The LTC's vector form factor times 2 pi: of the clipped polygon (clip) or of the
-    // whole one (proxy).
-    hvec3 vector_ff = hvec3(0.0);
-#ifndef AL_HORIZON_PROXY
-    hvec3 hx = hvec3(0.0), he = hvec3(0.0);
-    bool has_hx = false;
-#endif
+    AlLtcSum s1 = al_ltc_sum_init();
     rvec3 pa, pb, da, db;
     real za, zb;
     hvec3 ha, hb;
+#ifdef AL_LTC_TWO_LOBES
+    AlLtcSum s2 = al_ltc_sum_init();
+    hvec3 ha2, hb2;
+#endif
     // Vertices as given (Lambert, about n) and through Minv (LTC), walked as
     // light/polygon.glsl walks them (backwards from the front) so that both sums are >= 0;
     // the last step closes the polygon at vertex 0.
@@ -382,20 +443,26 @@ vec4 al_shade(AlCase c) {
         db = rvec3(c.verts[idx]);
         pb = normalize(center + db);
         zb = dot(pb, n);
-        hb = hvec3(AL_LTC_UNIT(rvec3(dot(pb, L.row0), dot(pb, L.row1), dot(pb, L.row2))));
+        rvec3 tb = rvec3(dot(pb, L.row0), dot(pb, L.row1), dot(pb, L.row2));
+        hb = hvec3(AL_LTC_UNIT(tb));
+#ifdef AL_LTC_TWO_LOBES
+        hb2 = hvec3(AL_LTC_UNIT(tb * rvec3(AL_LTC_INV_S, AL_LTC_INV_S, AL_R(1.0))));
+#endif
         if (k > 0) {
             rvec3 me = normalize(cross(center + da, db - da));
             al_lambert_clip_edge(pa, pb, za, zb, me, n, lambert, lx, le, has_lx);
-#ifdef AL_HORIZON_PROXY
-            vector_ff += al_edge_ltc(ha, hb);
-#else
-            al_ltc_clip_edge(ha, hb, vector_ff, hx, he, has_hx);
+            al_ltc_sum_edge(ha, hb, s1);
+#ifdef AL_LTC_TWO_LOBES
+            al_ltc_sum_edge(ha2, hb2, s2);
 #endif
         }
         pa = pb;
         da = db;
         za = zb;
         ha = hb;
+#ifdef AL_LTC_TWO_LOBES
+        ha2 = hb2;
+#endif
     }
     // The closing arc along the horizon, exit -> entry, about n: in [0, pi] (the light
     // lies in the open half space of its plane, which holds half the horizon circle).
@@ -406,19 +473,12 @@ vec4 al_shade(AlCase c) {
 
     real specular = AL_R(0.0);
     if (L.nv > AL_R(0.0)) {
-        real form;
-#ifdef AL_HORIZON_PROXY
-        form = al_ltc_proxy_form(vector_ff);
-#else
-        // The closing arc on the horizon z = 0, as for the Lambert term: along +z, its
-        // sine floored at 0.
-        if (has_hx) {
-            hreal sz = max(cross(hx, he).z, hreal(0.0));
-            vector_ff.z += sz * al_edge_factor(dot(hx, he), hvec3(hreal(0.0), hreal(0.0), sz));
-        }
-        form = real(vector_ff.z) / AL_TWO_PI;
+        real form = al_ltc_sum_form(s1);
+#ifdef AL_LTC_TWO_LOBES
+        // The kernel is negative in its far tail (K < 0): a light there gets 0.
+        form += L.amp.z * al_ltc_sum_form(s2);
 #endif
-        specular = max(form, AL_R(0.0)) * al_ltc_magnitude(L, vector_ff, real(c.params.w));
+        specular = max(form, AL_R(0.0)) * al_ltc_magnitude(L, s1.ff, real(c.params.w));
     }
     return vec4(diffuse, specular, AL_R(0.0), AL_R(0.0));
 }

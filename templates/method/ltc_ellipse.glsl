@@ -13,6 +13,16 @@
 // `arealight report`), plus light/ellipse_cone.glsl's fp32 rounding.
 
 #ifdef AL_LIGHT_CURVED
+// The LTC-space form factor of a transformed ellipse's cone k (vector form factor
+// vector_ff): the proxy sphere's or the exactly clipped one.
+real al_ltc_ellipse_form(AlEllipseCone k, hvec3 vector_ff) {
+#ifdef AL_HORIZON_PROXY
+    return al_ltc_proxy_form(vector_ff);
+#else
+    return al_ellipse_clipped_ff(k, rvec3(AL_R(0.0), AL_R(0.0), AL_R(1.0)));
+#endif
+}
+
 // Diffuse and specular (CONTRACT.md 2; no ndf or moment).
 vec4 al_shade(AlCase c) {
     if (c.params.z == AL_R(0.0)) return vec4(AL_R(0.0));
@@ -29,10 +39,12 @@ vec4 al_shade(AlCase c) {
         if (dot(cross(Ut, Vt), Ct) < AL_R(0.0)) Vt = -Vt;
         AlEllipseCone k = al_ellipse_cone(Ct, Ut, Vt);
         hvec3 vector_ff = hvec3(AL_TWO_PI * k.ff * k.axis);
-#ifdef AL_HORIZON_PROXY
-        real form = al_ltc_proxy_form(vector_ff);
-#else
-        real form = al_ellipse_clipped_ff(k, rvec3(AL_R(0.0), AL_R(0.0), AL_R(1.0)));
+        real form = al_ltc_ellipse_form(k, vector_ff);
+#ifdef AL_LTC_TWO_LOBES
+        // The second lobe (method/ltc.glsl): x and y over s, a map of positive determinant.
+        rvec3 sxy = rvec3(AL_LTC_INV_S, AL_LTC_INV_S, AL_R(1.0));
+        AlEllipseCone k2 = al_ellipse_cone(Ct * sxy, Ut * sxy, Vt * sxy);
+        form += L.amp.z * al_ltc_ellipse_form(k2, hvec3(AL_TWO_PI * k2.ff * k2.axis));
 #endif
         specular = max(form, AL_R(0.0)) * al_ltc_magnitude(L, vector_ff, real(c.params.w));
     }
