@@ -11,6 +11,15 @@ namespace {
 
 V3 v3(const Vec3& a) { return {a[0], a[1], a[2]}; }
 
+// The cell's Minv (include/arealight/ltc_table.hpp).
+M3 minv_of(const LtcCell& c) {
+    M3 m;
+    m.m[0][0] = c.a, m.m[0][1] = 0, m.m[0][2] = c.b;
+    m.m[1][0] = 0, m.m[1][1] = c.c, m.m[1][2] = 0;
+    m.m[2][0] = c.d, m.m[2][1] = 0, m.m[2][2] = 1;
+    return m;
+}
+
 }  // namespace
 
 LtcCell ltc_lookup(const LtcTable& t, double param, double cos_theta_v) {
@@ -72,20 +81,9 @@ bool ltc_polygon_case(const LtcTable& t, const Case& c, double& specular, double
     const bool exponent = t.dist == Distribution::Phong || t.dist == Distribution::Blinn;
     const double param = exponent ? c.material.exponent : c.material.alpha;
     const LtcCell cell = ltc_lookup(t, param, cv);
-    M3 minv;
-    minv.m[0][0] = cell.a, minv.m[0][1] = 0, minv.m[0][2] = cell.b;
-    minv.m[1][0] = 0, minv.m[1][1] = cell.c, minv.m[1][2] = 0;
-    minv.m[2][0] = cell.d, minv.m[2][1] = 0, minv.m[2][2] = 1;
     const double f0 = t.dist == Distribution::Phong ? 1.0 : c.material.f0;
-    double integral = ltc_polygon_integral(minv, local);
-    if (cell.kappa != 0) {
-        // The second lobe (ltc_table.hpp): Minv's first two rows over s.
-        for (int k = 0; k < 3; ++k) {
-            minv.m[0][k] /= kLtcSecondLobeWidth;
-            minv.m[1][k] /= kLtcSecondLobeWidth;
-        }
-        integral += cell.kappa * ltc_polygon_integral(minv, local);
-    }
+    double integral = ltc_polygon_integral(minv_of(cell), local);
+    if (cell.kappa != 0) integral += cell.kappa * ltc_polygon_integral(minv_of(ltc_second_lobe(cell)), local);
     // The kernel is negative in its far tail (K < 0): a light there gets 0, as in the shader.
     specular = (f0 * cell.amp_f0 + cell.amp_one) * std::max(integral, 0.0);
     return true;

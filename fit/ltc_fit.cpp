@@ -241,16 +241,14 @@ V3 rotate_from(V3 c, double theta, double phi) {
     return normalize(std::cos(theta) * c + (st * std::cos(phi)) * x + (st * std::sin(phi)) * y);
 }
 
+LtcDistribution ltc_of(const LtcCell& c) { return LtcDistribution::from_cell(c.a, c.b, c.c, c.d); }
+
 // The lobe the shader integrates for a cell (include/arealight/ltc_table.hpp): its LTC,
 // plus K times the LTC of diag(1 / s, 1 / s, 1) Minv, the same lobe s times wider.
 struct Lobe {
     LtcDistribution l1, l2;
     double kappa;
-    explicit Lobe(const LtcCell& c)
-        : l1(LtcDistribution::from_cell(c.a, c.b, c.c, c.d)),
-          l2(LtcDistribution::from_cell(c.a / kLtcSecondLobeWidth, c.b / kLtcSecondLobeWidth,
-                                        c.c / kLtcSecondLobeWidth, c.d)),
-          kappa(c.kappa) {}
+    explicit Lobe(const LtcCell& c) : l1(ltc_of(c)), l2(ltc_of(ltc_second_lobe(c))), kappa(c.kappa) {}
     double eval(V3 w) const { return kappa == 0 ? l1.eval(w) : l1.eval(w) + kappa * l2.eval(w); }
     double hemisphere_integral() const {
         const double h1 = l1.hemisphere_integral();
@@ -427,8 +425,6 @@ double fit_alpha(Distribution d, int size, int i) {
 }  // namespace ltcfit
 
 namespace {
-
-LtcDistribution ltc_of(const LtcCell& c) { return LtcDistribution::from_cell(c.a, c.b, c.c, c.d); }
 
 // What the shader samples halfway between two cells.
 LtcCell halfway(const LtcCell& x, const LtcCell& y) {

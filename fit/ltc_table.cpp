@@ -69,6 +69,14 @@ void ltc_rho_range(Distribution d, double& rho_min, double& rho_max) {
 
 bool ltc_two_lobes(Distribution d) { return d != Distribution::Ggx; }
 
+LtcCell ltc_second_lobe(const LtcCell& c) {
+    LtcCell s = c;
+    s.a /= kLtcSecondLobeWidth;
+    s.b /= kLtcSecondLobeWidth;
+    s.c /= kLtcSecondLobeWidth;
+    return s;
+}
+
 double ltc_cell_rho(const LtcTable& t, int i) {
     const double u = t.size > 1 ? static_cast<double>(i) / (t.size - 1) : 0.0;
     return t.rho_min + u * (t.rho_max - t.rho_min);

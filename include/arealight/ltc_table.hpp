@@ -43,7 +43,7 @@
 
 namespace arealight {
 
-// The second lobe's widening s (see above); the shader's AL_LTC_INV_S2 is 1 / s.
+// The second lobe's widening s (see above); the shader's AL_LTC_SECOND is diag(1 / s, 1 / s, 1).
 constexpr double kLtcSecondLobeWidth = 1.2;
 
 // Whether a distribution's table fits the two-lobe kernel (K free) or one LTC (K = 0).
@@ -56,6 +56,9 @@ struct LtcCell {
     double kappa = 0;                   // K
     double error = 0;                   // the fit metric at the optimum (for reports)
 };
+
+// The cell whose LTC is c's second lobe: Minv's first two rows (a, b, c) over s.
+LtcCell ltc_second_lobe(const LtcCell& c);
 
 struct LtcTable {
     Distribution dist = Distribution::Ggx;

@@ -39,7 +39,8 @@
 // clipping to z >= 0 is the same. K is the amplitude texture's z.
 #ifndef AL_DIST_GGX
 #define AL_LTC_TWO_LOBES
-const real AL_LTC_INV_S = AL_R(0.83333333333333333);  // 1 / kLtcSecondLobeWidth
+// The map diag(1 / s, 1 / s, 1), s = kLtcSecondLobeWidth.
+const rvec3 AL_LTC_SECOND = rvec3(AL_R(0.83333333333333333), AL_R(0.83333333333333333), AL_R(1.0));
 #endif
 
 // Grid of the tables (include/arealight/ltc_table.hpp, ltc_rho_range in
@@ -446,7 +447,7 @@ vec4 al_shade(AlCase c) {
         rvec3 tb = rvec3(dot(pb, L.row0), dot(pb, L.row1), dot(pb, L.row2));
         hb = hvec3(AL_LTC_UNIT(tb));
 #ifdef AL_LTC_TWO_LOBES
-        hb2 = hvec3(AL_LTC_UNIT(tb * rvec3(AL_LTC_INV_S, AL_LTC_INV_S, AL_R(1.0))));
+        hb2 = hvec3(AL_LTC_UNIT(tb * AL_LTC_SECOND));
 #endif
         if (k > 0) {
             rvec3 me = normalize(cross(center + da, db - da));

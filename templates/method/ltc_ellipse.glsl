@@ -42,8 +42,7 @@ vec4 al_shade(AlCase c) {
         real form = al_ltc_ellipse_form(k, vector_ff);
 #ifdef AL_LTC_TWO_LOBES
         // The second lobe (method/ltc.glsl): x and y over s, a map of positive determinant.
-        rvec3 sxy = rvec3(AL_LTC_INV_S, AL_LTC_INV_S, AL_R(1.0));
-        AlEllipseCone k2 = al_ellipse_cone(Ct * sxy, Ut * sxy, Vt * sxy);
+        AlEllipseCone k2 = al_ellipse_cone(Ct * AL_LTC_SECOND, Ut * AL_LTC_SECOND, Vt * AL_LTC_SECOND);
         form += L.amp.z * al_ltc_ellipse_form(k2, hvec3(AL_TWO_PI * k2.ff * k2.axis));
 #endif
         specular = max(form, AL_R(0.0)) * al_ltc_magnitude(L, vector_ff, real(c.params.w));
