@@ -55,6 +55,42 @@ inline CaseSet random_microfacet_polygons(std::uint64_t seed, int count, Distrib
     return set;
 }
 
+// Large polygons that hold the whole lobe, the case where the specular factor W (G2, h.v,
+// 1/n.v) varies most across the D-weighted half vectors: a regular k-gon (k 4 to 8) about the
+// mirror direction r, tilted off it by up to 0.3 rad, 1 to 3 away, its circumradius 1.5 to
+// 3 times that (lit to the horizon where it crosses it); n.v in [0.15, 0.9], alpha in
+// [0.15, 0.6] log-uniform (blinn: N = 2 / alpha^2 - 2), f0 on every other case.
+inline CaseSet lobe_filling_microfacet_polygons(std::uint64_t seed, int count, Distribution d) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> U(0, 1);
+    CaseSet set;
+    for (int i = 0; i < count; ++i) {
+        const glm::dvec3 n(0, 0, 1);
+        const double nv = 0.15 + 0.75 * U(rng), sv = std::sqrt(1 - nv * nv);
+        const glm::dvec3 v(sv, 0, nv), r = 2 * nv * n - v;
+        const glm::dvec3 dir = glm::normalize(
+            r + 0.3 * glm::dvec3(U(rng) - 0.5, U(rng) - 0.5, U(rng) - 0.5));
+        const glm::dvec3 t1 = glm::normalize(glm::cross(dir, glm::dvec3(0.3, 0.5, 0.8)));
+        const glm::dvec3 t2 = glm::cross(dir, t1);
+        const int k = 4 + static_cast<int>(U(rng) * 5);
+        const double dist = 1 + 2 * U(rng), rad = (1.5 + 1.5 * U(rng)) * dist;
+        std::vector<glm::dvec3> verts;
+        for (int j = 0; j < k; ++j) {
+            const double a = -2 * kPi_ * j / k;  // clockwise about dir
+            verts.push_back(dist * dir + rad * (std::cos(a) * t1 + std::sin(a) * t2));
+        }
+        const double alpha = 0.15 * std::exp(std::log(4.0) * U(rng));
+        const double p = d == Distribution::Blinn ? 2 / (alpha * alpha) - 2 : alpha;
+        Case c = polygon_case("filling-" + std::to_string(i), verts, n, v, d, p);
+        if (i % 2 == 1) {
+            c.material.f0 = U(rng);
+            c.material.has_f0 = true;
+        }
+        set.cases.push_back(c);
+    }
+    return set;
+}
+
 // Grazing views, n.v exactly each of 1e-3, 1e-4 and 1e-7 (n = +z, v in the xz plane), at
 // alpha 0.1, 0.3, 0.5, 0.77 and 1 (blinn: N = 2 / alpha^2 - 2, at least 1), each with a
 // square light about the mirror direction r (itself 2 n.v above the horizon) raised by

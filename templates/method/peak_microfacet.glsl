@@ -19,10 +19,10 @@
 // (tests/test_peak_microfacet.cpp checks it by quadrature of al_mix_ndf).
 //
 // GPU cost (navi21, `arealight gpu-cost`, the validation kernel, polygon, against the
-// point light's 498-573; with AL_FAST_ARC, common/common.glsl, the one-lobe loop unrolled
-// and each arc's shared terms once, 2026-12-06): lorentz 15 525 / 15 530 / 20 360 (blinn /
-// beckmann / ggx; 27-41x), pearson 17 620 / 17 625 / 24 549 (31-49x), ellipsoid 17 783 /
-// 17 788 / 24 876 (31-49.95x).
+// point light's 498-573; with AL_FAST_ARC, common/common.glsl, the one-lobe loop unrolled,
+// each arc's shared terms once and GGX's spread factor, 2026-12-06): lorentz 15 525 /
+// 15 530 / 20 450 (blinn / beckmann / ggx; 27-41x), pearson 17 613 / 17 625 / 24 639
+// (31-49.5x), ellipsoid 17 776 / 17 788 / 24 965 (31-50.1x).
 //
 // The paper's formulas, checked numerically (the copy we read garbles some):
 // - eq. 23: int D_Blinn dh = (N+2)/(2 pi) int (n.h)^N dh = (N+2)/(N+1) mu_N. As printed.
@@ -87,6 +87,16 @@
 //   h* = normalize(n + v)). The D-weighted mean half vector of lobe 0 (its first
 //   moment by Arvo's two-axis relation, two more peak integrals per chord) was no
 //   better (Blinn specular 5.6e-3 / 4.6e-2 with horizon p95 0.76) and was dropped.
+// - factor=blend, GGX: W is concave, so W at one point overestimates its D-weighted mean
+//   (Jensen), most where GGX's long tail spreads D over a large light. W is averaged over
+//   four points about h* (al_mf_end): specular relL2 typical / horizon / glossy / stress
+//   pearson 2.2e-2 / 2.7e-2 / 7.0e-3 / 2.8e-2 -> 1.3e-2 / 1.6e-2 / 7.0e-3 / 2.8e-2, lorentz
+//   2.3e-2 / 3.3e-2 -> 1.3e-2 / 2.5e-2; spinning polygon on spheres 7.8e-2 / 0.14 -> 1.5e-2 /
+//   2.8e-2. The same average made Blinn's and Beckmann's horizon sets worse (blinn pearson
+//   3.8e-2 -> 6.2e-2; their Gaussian tails keep D within the spread), as did moving points
+//   whose w falls below the horizon back above it, for GGX (typical 2.2e-2 -> 3.2e-2). The
+//   unshrunk spread at grazing views took GGX's stress sets from 2.9e-3 to 5.0e-2 (ellipsoid
+//   lights). Cost +90 cycles a wave (ggx ellipsoid 24 876 -> 24 965).
 // - n.v <= 0 (specular 0, outside the method's range): half vectors below n's horizon
 //   are projected onto it, so the chords follow the horizon there.
 // - A chord shorter than 1e-7 rad adds its azimuth sweep only (its edge integral and
@@ -94,7 +104,7 @@
 //
 // Measured (lavapipe; the CPU mirror agrees), default keys, specular relL2 typical /
 // horizon / glossy: blinn ellipsoid 6.5e-3 / 3.8e-2 / 2.9e-3, beckmann 9.6e-3 / 1.7e-2
-// / 6.8e-3, ggx 2.2e-2 / 2.7e-2 / 7.0e-3; no missing or bad value on any set. The
+// / 6.8e-3, ggx 1.3e-2 / 1.6e-2 / 7.0e-3; no missing or bad value on any set. The
 // paper's recipe (fit=paper, Algorithm 1, closest): 3.4e-2 / 0.34 / 2.1e-2, 6.4e-2 /
 // 9.8e-2 / 5.1e-2, 7.0e-2 / 8.8e-2 / 2.6e-2. What is left: the specular factor (W at
 // one point; grazing views, e.g. beckmann at n.v = 1e-3: -11%), Beckmann's model at
@@ -117,6 +127,11 @@
 // trips whatever its count (beckmann pearson 29 346 -> 19 820 cycles a wave, 2 576 -> 2 560
 // instructions); GGX's three lobes stay a loop, whose unrolled form the model charges more
 // (pearson 30 325 -> 38 391).
+// GGX's specular factor (factor=blend) averages W over the spread of its D-weighted
+// h-region (al_mf_end); the Gaussian-tailed lobes and factor=closest keep W at one point.
+#if defined(AL_DIST_GGX) && !defined(AL_FIT_PAPER) && defined(AL_FACTOR_BLEND)
+#define AL_PMF_SPREAD
+#endif
 #if AL_PMF_LOBES == 1
 #define AL_PMF_LOBE_LOOP AL_UNROLL
 #else
@@ -507,8 +522,18 @@ void al_moments_arc(AL_INOUT(AlMoments) M, rvec3 a, rvec3 b, rvec3 m, rvec3 axis
     }
 }
 
+// G2(w, v) max(h.v, 0) of a unit h, from hv = h.v and nh = n.h: w = 2 (h.v) h - v is a unit
+// vector with n.w = 2 hv nh - n.v, so |n x w|^2 = (1 - n.w)(1 + n.w). The factor W of
+// al_mf_end is this times F(h.v) / (n.v).
+real al_pmf_g2_hv(AlMoments M, real hv, real nh) {
+    real nw = AL_R(2.0) * hv * nh - M.nv;
+    real lw = al_smith_lambda(M.d, max(nw, AL_R(0.0)), (AL_R(1.0) - nw) * (AL_R(1.0) + nw));
+    return al_smith_g2(lw, M.lv) * max(hv, AL_R(0.0));
+}
+
 // (specular, ndf): the model's moments over the h-polygon, and specular as ndf times
-// W = G2(w*, v) (h*.v)/(n.v) F(h*.v) at one representative half vector h*.
+// W = G2(w*, v) (h*.v)/(n.v) F(h*.v) at one representative half vector h* (GGX: its mean
+// over four points about h*).
 rvec2 al_mf_end(AlMoments M) {
     real ndf = M.mix.c0 * M.omega_h / AL_PI;
     for (int j = 0; j < AL_PMF_LOBES; ++j) {
@@ -533,11 +558,43 @@ rvec2 al_mf_end(AlMoments M) {
         hs = normalize(beta * hs + (AL_R(1.0) - beta) * hf);
     }
 #endif
+#ifdef AL_PMF_SPREAD
+    // GGX: W averaged over four points h* +- sqrt(2) s t1, t2 (t1 towards n), the spread
+    // s^2 = 1 / (4 pi / Omega_h + 2 / m^2) of the D-weighted h-region (the h-polygon's size
+    // and the lobe's width, whichever is smaller), shrunk within ~3 degrees of grazing views,
+    // where W ~ 1/(n.v) is not smooth on the lobe's scale. Points whose w falls below the
+    // horizon count with W = 0 (G2 = 0 there). Measured and not taken: W continued as an odd
+    // function of n.w below the horizon (exact where W is linear across it): public horizon
+    // set specular p95 9.8e-2 -> 7.7e-2 (pearson) but relL2 1.6e-2 -> 1.9e-2, and disk
+    // horizon 6.1e-2 -> 0.19 (lobes the horizon cuts, whose D-weighted W it underestimates).
+    real m2 = M.d.width * M.d.width, nv2 = M.nv * M.nv;
+    real omega = max(M.omega_h, AL_R(0.0));
+    // halved at n.v = 0.05
+    real s2 = nv2 * omega * m2 / max((nv2 + AL_R(0.0025)) * (AL_R(4.0) * AL_PI * m2 + AL_R(2.0) * omega),
+                                     AL_R(1e-30));
+    real off2 = AL_R(2.0) * s2;
+    // The points h = (h* + off t) / |h* + off t| for unit t orthogonal to h*, |h* + off t|^2 =
+    // 1 + off^2: t1 = (n - (n.h*) h*) / L and t2 = (h* x n) / L, L = |h* x n|, so n.t1 = L,
+    // n.t2 = 0, v.t1 = (n.v - (n.h*)(h*.v)) / L; near h* = n, t1 along v's tangent part and
+    // t2 across it (v.t2 = 0).
+    real k = inversesqrt(AL_R(1.0) + off2);
+    real hv0 = dot(hs, M.v), nh0 = dot(hs, M.n);
+    real hv = hv0 * k, nh = nh0 * k;
+    k *= sqrt(off2);
+    rvec3 c = cross(hs, M.n);
+    real L = length(c);
+    bool framed = L > AL_R(1e-6);
+    real kl = k / max(L, AL_R(1e-6));
+    real dn1 = framed ? k * L : AL_R(0.0);
+    real dv1 = framed ? kl * (M.nv - nh0 * hv0) : k * sqrt(max((AL_R(1.0) - M.nv) * (AL_R(1.0) + M.nv), AL_R(0.0)));
+    real dv2 = framed ? kl * dot(c, M.v) : AL_R(0.0);
+    // F at h* alone: it varies over the spread far less than G2 (h.v) does.
+    real W = (al_pmf_g2_hv(M, hv + dv1, nh + dn1) + al_pmf_g2_hv(M, hv - dv1, nh - dn1) +
+              al_pmf_g2_hv(M, hv + dv2, nh) + al_pmf_g2_hv(M, hv - dv2, nh)) *
+             al_schlick(M.f0, hv0) / (AL_R(4.0) * M.nv);
+#else
     real hv = dot(hs, M.v);
-    rvec3 w = AL_R(2.0) * hv * hs - M.v;
-    real nw = dot(M.n, w);
-    rvec3 nxw = cross(M.n, w);
-    real g2 = al_smith_g2(al_smith_lambda(M.d, max(nw, AL_R(0.0)), dot(nxw, nxw)), M.lv);
-    real W = g2 * max(hv, AL_R(0.0)) / M.nv * al_schlick(M.f0, hv);
+    real W = al_pmf_g2_hv(M, hv, dot(hs, M.n)) * al_schlick(M.f0, hv) / M.nv;
+#endif
     return rvec2(ndf * W, ndf);
 }
