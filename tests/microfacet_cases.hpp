@@ -58,15 +58,16 @@ inline CaseSet random_microfacet_polygons(std::uint64_t seed, int count, Distrib
 // Large polygons that hold the whole lobe, the case where the specular factor W (G2, h.v,
 // 1/n.v) varies most across the D-weighted half vectors: a regular k-gon (k 4 to 8) about the
 // mirror direction r, tilted off it by up to 0.3 rad, 1 to 3 away, its circumradius 1.5 to
-// 3 times that (lit to the horizon where it crosses it); n.v in [0.15, 0.9], alpha in
-// [0.15, 0.6] log-uniform (blinn: N = 2 / alpha^2 - 2), f0 on every other case.
-inline CaseSet lobe_filling_microfacet_polygons(std::uint64_t seed, int count, Distribution d) {
+// 3 times that (lit to the horizon where it crosses it); n.v uniform in [nv_lo, nv_hi], alpha
+// in [0.15, 0.6] log-uniform (blinn: N = 2 / alpha^2 - 2), f0 on every other case.
+inline CaseSet lobe_filling_microfacet_polygons(std::uint64_t seed, int count, Distribution d,
+                                                double nv_lo = 0.15, double nv_hi = 0.9) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> U(0, 1);
     CaseSet set;
     for (int i = 0; i < count; ++i) {
         const glm::dvec3 n(0, 0, 1);
-        const double nv = 0.15 + 0.75 * U(rng), sv = std::sqrt(1 - nv * nv);
+        const double nv = nv_lo + (nv_hi - nv_lo) * U(rng), sv = std::sqrt(1 - nv * nv);
         const glm::dvec3 v(sv, 0, nv), r = 2 * nv * n - v;
         const glm::dvec3 dir = glm::normalize(
             r + 0.3 * glm::dvec3(U(rng) - 0.5, U(rng) - 0.5, U(rng) - 0.5));

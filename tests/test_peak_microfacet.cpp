@@ -153,9 +153,9 @@ const PeakMfBar kBars[] = {
     {Distribution::Beckmann, "lorentz", 1.5e-2, 4.5e-2},    // [9.9e-3, 3.0e-2]
     {Distribution::Beckmann, "pearson", 1e-2, 4e-2},        // [6.7e-3, 2.7e-2]
     {Distribution::Beckmann, "ellipsoid", 1.1e-2, 4e-2},    // [7.0e-3, 2.7e-2]
-    {Distribution::Ggx, "lorentz", 1.2e-2, 4e-2},           // [8.0e-3, 2.7e-2]
-    {Distribution::Ggx, "pearson", 8e-3, 4e-2},             // [5.3e-3, 2.7e-2]
-    {Distribution::Ggx, "ellipsoid", 8e-3, 4e-2},           // [5.3e-3, 2.7e-2]
+    {Distribution::Ggx, "lorentz", 1.2e-2, 4.5e-2},         // [8.0e-3, 3.1e-2]
+    {Distribution::Ggx, "pearson", 8e-3, 4.5e-2},           // [5.3e-3, 3.0e-2]
+    {Distribution::Ggx, "ellipsoid", 8e-3, 4.5e-2},         // [5.3e-3, 3.0e-2]
 };
 // The CPU mirror against lavapipe: fp32 with the drivers' exp, sin, cos and the fits'
 // branch points (near/far form, clamps, the split test); measured worst relative
@@ -166,14 +166,18 @@ constexpr double kBackendTol = 2e-4;
 
 // GGX's specular factor averaged over the spread of the D-weighted half vectors (al_mf_end,
 // AL_PMF_SPREAD) against W at one point, on 40 lights that hold the whole lobe: specular
-// relL2 5.1e-2 / 5.5e-2 / 5.6e-2 (lorentz / pearson / ellipsoid, both backends alike) where
+// relL2 4.7e-2 / 5.1e-2 / 5.2e-2 (lorentz / pearson / ellipsoid, both backends alike) where
 // W at one point measured 7.6e-2 / 7.5e-2 / 7.5e-2 (W is concave: one point overestimates
 // its mean). The bar lies between the two, so losing the spread fails it.
 constexpr double kFillingSpecularTol = 6.5e-2;
 
-TEST_CASE("microfacet peak methods: GGX's factor over lights that hold the whole lobe",
-          "[shading][vulkan][peakmf]") {
-    const CaseSet cases = lobe_filling_microfacet_polygons(4242, 40, Distribution::Ggx);
+// The same lights at grazing views, n.v in [1e-3, 0.05] (AL_PMF_SPREAD's shift of h* to the
+// mean of the lobe's lit half): specular relL2 0.145 / 0.145 / 0.146 (pearson / ellipsoid /
+// lorentz) where h* = n measured 0.43 / 0.43 / 0.43 with the spread and 0.44 without it.
+constexpr double kGrazingFillingSpecularTol = 0.2;
+
+// The specular relL2 of GGX's three peak methods on cases, both backends, against the bar.
+void check_ggx_peak_specular(const CaseSet& cases, double bar) {
     std::map<std::string, CaseResult> ref;
     for (const auto& c : cases.cases) ref[c.id] = reference_case(c, {});
     for (const char* method : kPeakMethods) {
@@ -183,9 +187,22 @@ TEST_CASE("microfacet peak methods: GGX's factor over lights that hold the whole
             REQUIRE(out.results.size() == cases.cases.size());
             const double spec = rel_l2(out, ref, &CaseResult::specular);
             INFO(name << " on " << to_string(b) << ": specular relL2 " << spec);
-            CHECK(spec <= kFillingSpecularTol);
+            CHECK(spec <= bar);
         }
     }
+}
+
+TEST_CASE("microfacet peak methods: GGX's factor over lights that hold the whole lobe",
+          "[shading][vulkan][peakmf]") {
+    check_ggx_peak_specular(lobe_filling_microfacet_polygons(4242, 40, Distribution::Ggx),
+                            kFillingSpecularTol);
+}
+
+TEST_CASE("microfacet peak methods: GGX's factor at grazing views under lights that hold the lobe",
+          "[shading][vulkan][peakmf]") {
+    check_ggx_peak_specular(
+        lobe_filling_microfacet_polygons(4343, 40, Distribution::Ggx, 1e-3, 0.05),
+        kGrazingFillingSpecularTol);
 }
 
 TEST_CASE("microfacet peak methods: bounded error on random polygons, backends agree",
