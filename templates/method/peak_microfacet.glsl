@@ -134,6 +134,10 @@
 // trips whatever its count (beckmann pearson 29 346 -> 19 820 cycles a wave, 2 576 -> 2 560
 // instructions); GGX's three lobes stay a loop, whose unrolled form the model charges more
 // (pearson 30 325 -> 38 391).
+// (n.v)^2 at which the grazing-view terms of al_mf_end change over: GGX's spread is halved
+// and h*'s shift towards the lobe's lit half is half on at n.v = 0.05 (about 3 degrees from
+// grazing).
+#define AL_PMF_GRAZING2 AL_R(0.0025)
 // GGX's specular factor (factor=blend) averages W over the spread of its D-weighted
 // h-region (al_mf_end); the Gaussian-tailed lobes and factor=closest keep W at one point.
 #if defined(AL_DIST_GGX) && !defined(AL_FIT_PAPER) && defined(AL_FACTOR_BLEND)
@@ -556,6 +560,11 @@ rvec2 al_mf_end(AlMoments M) {
     if (!M.specular_on) return rvec2(AL_R(0.0), ndf);
     // n inside the h-polygon (its sweeps total -2 pi wraps, wraps = -1): h* = n.
     rvec3 hs = abs(M.wraps) > AL_R(0.5) ? M.n : M.h_close;
+#ifdef AL_FACTOR_BLEND
+    // The blend's weight of the lobe's point against the light's (header: factor).
+    real m2 = M.d.width * M.d.width;
+    real beta = M.omega / max(M.omega + AL_R(4.0) * AL_PI * m2, AL_R(1e-30));
+#endif
 #if !defined(AL_FIT_PAPER) && defined(AL_FACTOR_BLEND)
     // Grazing views, the lobe's peak lit (n in the h-polygon): the horizon n.w = 0 cuts the
     // lobe at slope x_c = -n.v / (1 + sin theta_v) from n, away from v, within a hair of its
@@ -584,8 +593,7 @@ rvec2 al_mf_end(AlMoments M) {
                                              : AL_R(2.0) - al_pmf_erfc_abs(z * AL_R(0.70710678118654752)));
         real xbar = sig * AL_R(0.39894228040143268) * al_exp(-AL_R(0.5) * z * z) / max(q, AL_R(1e-30));
 #endif
-        real g = AL_R(0.0025) / (AL_R(0.0025) + M.nv * M.nv) *
-                 M.omega / max(M.omega + AL_R(4.0) * AL_PI * M.d.width * M.d.width, AL_R(1e-30));
+        real g = AL_PMF_GRAZING2 / (AL_PMF_GRAZING2 + M.nv * M.nv) * beta;
         if (sv > AL_R(1e-7)) hs = normalize(M.n + (g * xbar / sv) * tv);
     }
 #endif
@@ -593,8 +601,6 @@ rvec2 al_mf_end(AlMoments M) {
     real irr_len = length(M.irr);
     if (irr_len > AL_R(0.0)) {
         rvec3 hf = normalize(M.irr / irr_len + M.v);
-        real m2 = M.d.width * M.d.width;
-        real beta = M.omega / max(M.omega + AL_R(4.0) * AL_PI * m2, AL_R(1e-30));
         hs = normalize(beta * hs + (AL_R(1.0) - beta) * hf);
     }
 #endif
@@ -607,10 +613,9 @@ rvec2 al_mf_end(AlMoments M) {
     // function of n.w below the horizon (exact where W is linear across it): public horizon
     // set specular p95 9.8e-2 -> 7.7e-2 (pearson) but relL2 1.6e-2 -> 1.9e-2, and disk
     // horizon 6.1e-2 -> 0.19 (lobes the horizon cuts, whose D-weighted W it underestimates).
-    real m2 = M.d.width * M.d.width, nv2 = M.nv * M.nv;
+    real nv2 = M.nv * M.nv;
     real omega = max(M.omega_h, AL_R(0.0));
-    // halved at n.v = 0.05
-    real s2 = nv2 * omega * m2 / max((nv2 + AL_R(0.0025)) * (AL_R(4.0) * AL_PI * m2 + AL_R(2.0) * omega),
+    real s2 = nv2 * omega * m2 / max((nv2 + AL_PMF_GRAZING2) * (AL_R(4.0) * AL_PI * m2 + AL_R(2.0) * omega),
                                      AL_R(1e-30));
     real off2 = AL_R(2.0) * s2;
     // The points h = (h* + off t) / |h* + off t| for unit t orthogonal to h*, |h* + off t|^2 =
