@@ -70,6 +70,7 @@ namespace mf64_blinn {
 using namespace glm;
 #include "templates/common/common.glsl"
 #include "templates/dist/blinn.glsl"
+#include "templates/common/erfcx.glsl"
 #include "templates/dist/microfacet.glsl"
 AL_TEST_WRAPPERS
 }  // namespace mf64_blinn
@@ -79,6 +80,7 @@ namespace mf64_beckmann {
 using namespace glm;
 #include "templates/common/common.glsl"
 #include "templates/dist/beckmann.glsl"
+#include "templates/common/erfcx.glsl"
 #include "templates/dist/microfacet.glsl"
 AL_TEST_WRAPPERS
 }  // namespace mf64_beckmann
@@ -87,6 +89,7 @@ namespace mf64_ggx {
 using namespace glm;
 #include "templates/common/common.glsl"
 #include "templates/dist/ggx.glsl"
+#include "templates/common/erfcx.glsl"
 #include "templates/dist/microfacet.glsl"
 AL_TEST_WRAPPERS
 }  // namespace mf64_ggx
@@ -109,6 +112,7 @@ namespace mf32_blinn {
 using namespace glm;
 #include "templates/common/common.glsl"
 #include "templates/dist/blinn.glsl"
+#include "templates/common/erfcx.glsl"
 #include "templates/dist/microfacet.glsl"
 AL_TEST_WRAPPERS
 }  // namespace mf32_blinn
@@ -118,6 +122,7 @@ namespace mf32_beckmann {
 using namespace glm;
 #include "templates/common/common.glsl"
 #include "templates/dist/beckmann.glsl"
+#include "templates/common/erfcx.glsl"
 #include "templates/dist/microfacet.glsl"
 AL_TEST_WRAPPERS
 }  // namespace mf32_beckmann
@@ -126,6 +131,7 @@ namespace mf32_ggx {
 using namespace glm;
 #include "templates/common/common.glsl"
 #include "templates/dist/ggx.glsl"
+#include "templates/common/erfcx.glsl"
 #include "templates/dist/microfacet.glsl"
 AL_TEST_WRAPPERS
 }  // namespace mf32_ggx

@@ -48,6 +48,7 @@ namespace pmf_blinn {
 using namespace glm;
 #include "../templates/common/common.glsl"
 #include "../templates/dist/blinn.glsl"
+#include "../templates/common/erfcx.glsl"
 #include "../templates/dist/microfacet.glsl"
 #include "../templates/method/phong_edge.glsl"
 #include "../templates/method/peak_phong.glsl"
@@ -65,6 +66,7 @@ namespace pmf_beckmann {
 using namespace glm;
 #include "../templates/common/common.glsl"
 #include "../templates/dist/beckmann.glsl"
+#include "../templates/common/erfcx.glsl"
 #include "../templates/dist/microfacet.glsl"
 #include "../templates/method/phong_edge.glsl"
 #include "../templates/method/peak_phong.glsl"
@@ -82,6 +84,7 @@ namespace pmf_ggx {
 using namespace glm;
 #include "../templates/common/common.glsl"
 #include "../templates/dist/ggx.glsl"
+#include "../templates/common/erfcx.glsl"
 #include "../templates/dist/microfacet.glsl"
 #include "../templates/method/phong_edge.glsl"
 #include "../templates/method/peak_phong.glsl"
@@ -98,6 +101,7 @@ namespace pmf_ggx_paper {
 using namespace glm;
 #include "../templates/common/common.glsl"
 #include "../templates/dist/ggx.glsl"
+#include "../templates/common/erfcx.glsl"
 #include "../templates/dist/microfacet.glsl"
 #include "../templates/method/phong_edge.glsl"
 #include "../templates/method/peak_phong.glsl"

@@ -40,7 +40,7 @@
 // the rule of method/phong_edge_rule.glsl.
 AlLobeEdge al_lobe_edge(rvec3 a, rvec3 b, rvec3 m, rvec3 r, rvec3 n, real N) {
     AlEdgeFrame E = al_edge_frame(a, b, m, r, N, AL_R(-6.9));  // x^(N+1) >= 1e-3
-    return al_lobe_sums(E, al_lobe_rule(E, N, false), n, m);
+    return al_lobe_sums(E, al_lobe_rule(E, N), n, m);
 }
 
 #ifdef AL_LIGHT_CURVED
@@ -63,7 +63,6 @@ rvec4 al_lobe_conic(rvec3 C, rvec3 U, rvec3 V, rvec4 sub, rvec3 r, rvec3 n, real
     bool far_part = N * (AL_R(1.0) - x_max * x_max) > AL_R(4.0) ||
                     (N + AL_R(1.0)) * al_log(max(x_max, AL_R(1e-30))) < AL_R(-6.9);
     AlPeakRule rule = al_peak_rule(sub.w, f.ends.x, f.ends.y, f.ends.z, f.ends.w);
-    real k1 = N + AL_R(1.0);
     rvec4 acc = rvec4(AL_R(0.0));
     for (int piece = 0; piece < 3; ++piece) {
         rvec2 range = al_peak_range(rule, piece);
@@ -86,13 +85,8 @@ rvec4 al_lobe_conic(rvec3 C, rvec3 U, rvec3 V, rvec4 sub, rvec3 r, rvec3 n, real
             real lx = y < AL_R(1.0) && dot(r, w) > AL_R(0.0) ? AL_R(0.5) * al_log1p(-y)
                                                             : AL_R(-1.0e30);
             real xn = al_exp(N * lx);
-            if (far_part) {
-                sum += wt * rvec4(rJ * xn * al_exp(lx) / y, rJ * xn / y, nJ * xn, AL_R(0.0));
-            } else {
-                real g1 = y > AL_R(1e-30) ? -al_expm1(k1 * lx) / y : AL_R(0.5) * k1;
-                real g0 = y > AL_R(1e-30) ? -al_expm1(N * lx) / y : AL_R(0.5) * N;
-                sum += wt * rvec4(rJ * g1, rJ * g0, nJ * xn, AL_R(0.0));
-            }
+            rvec2 g = al_lobe_integrands(y, lx, xn, N, far_part);
+            sum += wt * rvec4(rJ * g.x, rJ * g.y, nJ * xn, AL_R(0.0));
             if (y > AL_TINY) sum.w += wt * rJ / y;
         }
         acc += sum * half_width;

@@ -1,20 +1,25 @@
 // Phong's per-arc sums on a polygon by peak functions (method/peak_phong.glsl), with
 // two departures where the fits fail (fit=tuned only; fit=paper fits everything):
 // - N below AL_PEAK_RULE_BELOW: the whole arc by the Gauss rule of
-//   method/phong_edge_rule.glsl at 8 nodes (common/gauss_legendre8.glsl). A low-N lobe is wide, so
-//   lights near the horizon see a specular moment that is a small difference of O(1)
-//   boundary terms (N (r.n) M_(N-1) against the z sums), and a fit's 1e-2 became an
+//   method/phong_edge_rule.glsl at 6 nodes (common/gauss_legendre6.glsl). A low-N lobe is
+//   wide, so lights near the horizon see a specular moment that is a small difference of
+//   O(1) boundary terms (N (r.n) M_(N-1) against the z sums), and a fit's 1e-2 became an
 //   error of order 1 (the public horizon sphere case at N = 2.46: specular relL2 0.5
-//   through the 16-gon proxy). The rule at 8 nodes on every arc: specular relL2
-//   2.9e-5 on the set below.
-// - The z integral int x^N dtau of every arc by the same rule (z only: one exp and
-//   one log per node): it carries that cancellation at any N.
+//   through the 16-gon proxy).
+// - The z integral int x^N dtau of every arc, which carries that cancellation at any N:
+//   at N >= 32 in closed form (method/phong_lobe_z.glsl, error <= 2.1e-5 of the lobe's
+//   integral), below it the rule's third sum.
 // Measured on 1500 polygons near the horizon with r aimed at them, N in [1, 200]
 // (scripts/gen_curved_cases.py 1500 5 --kind aimed), specular relL2: lorentz
 // 2.4e-2 -> 8.1e-3, ellipsoid 1.4e-2 -> 2.3e-3; public horizon 3.6e-3 -> 8.0e-4
 // (lorentz). What is left is the fits of the moment's t_(N+1), t_N at N >= 32.
-// Domain: real N >= 1, any arc. Cost: 8 nodes of one exp and one log per arc for z;
-// below the threshold the rule's three integrands instead of the fits.
+// The rule at 8 nodes and z by its z sum at N >= 32 (before 2026-12-06) against 6 nodes
+// and the closed form, specular relL2 (pearson; lorentz alike): public sets unchanged to 3
+// digits but stress 2.1e-4 -> 3.8e-4 (lorentz 7.1e-4 -> 1.3e-4: a grazing N = 2 551
+// pentagon, where 8 nodes left z 1e-3 off); 600 horizon-peak polygons (gen_curved_cases.py
+// 600 7 --kind horizon-peak) 2.39e-3 -> 2.26e-3 (4 nodes: 2.96e-3; 5: 2.44e-3). GPU cost
+// (navi21): lorentz 7 239 -> 6 721 cycles a wave, both arms of the branch counted.
+// Domain: real N >= 1, any arc.
 #define AL_PEAK_RULE_BELOW AL_R(32.0)
 
 // Per-arc sums for the arc a -> b with inward unit normal m (method/phong_edge.glsl), the
@@ -27,8 +32,7 @@ AlLobeEdge al_lobe_edge(rvec3 a, rvec3 b, rvec3 m, rvec3 r, rvec3 n, real N) {
     // navi21), the same sums either way.
     bool low = N < AL_PEAK_RULE_BELOW;
     AlEdgeFrame E = al_edge_frame(a, b, m, r, N, low ? AL_R(-6.9) : AL_PEAK_LOG_FAR);
-    rvec3 rule = al_lobe_rule(E, N, !low);
-    if (low) return al_lobe_sums(E, rule, n, m);  // the exact method's forms
+    if (low) return al_lobe_sums(E, al_lobe_rule(E, N), n, m);  // the exact method's forms
 #else
     AlEdgeFrame E = al_edge_frame(a, b, m, r, N, AL_PEAK_LOG_FAR);
     E.far_edge = false;  // the paper fits the near form everywhere
@@ -52,7 +56,7 @@ AlLobeEdge al_lobe_edge(rvec3 a, rvec3 b, rvec3 m, rvec3 r, rvec3 n, real N) {
     F.gt = al_exp(N * (lc - AL_R(0.5) * al_log1p(F.tt2)));
     real tz = al_peak_integral(E.ag, E.af, E.bg, E.bf, S.ta, S.dtau, F);
 #else
-    real tz = rule.z;
+    real tz = al_lobe_z(E, S.lc, N);
 #endif
     AlLobeEdge e;
     e.near_edge = !far_edge;

@@ -357,33 +357,9 @@ bool al_pmf_far(AlEdgeFrame E, real log_x_max, real N) {
 }
 
 #ifndef AL_FIT_PAPER
-// erfcx(x) for x >= 0. AL_FAST_ARC: t Q(t), t = 1 / (1 + x/2), Q of degree 9 fitted
-// near-minimax in relative error (scripts/fit_erfcx_fast.py): fp32 relative error <= 4.3e-7
-// (al_erfcx: 3.6e-7) for one division and nine FMAs, where al_erfcx's three branches of
-// rationals all count on a GPU (ggx pearson 26 857 -> 25 722 cycles a wave, navi21).
-// Otherwise al_erfcx (dist/microfacet.glsl).
-real al_pmf_erfcx(real x) {
-#ifdef AL_FAST_ARC
-    real t = AL_R(1.0) / (AL_R(1.0) + AL_R(0.5) * x);
-    real q = AL_R(-2.552324875e-02);
-    q = q * t + AL_R(6.446360764e-02);
-    q = q * t + AL_R(3.074845513e-02);
-    q = q * t + AL_R(-1.985430958e-01);
-    q = q * t + AL_R(7.946518291e-02);
-    q = q * t + AL_R(5.826319569e-02);
-    q = q * t + AL_R(1.804145358e-01);
-    q = q * t + AL_R(2.465122442e-01);
-    q = q * t + AL_R(2.821042176e-01);
-    q = q * t + AL_R(2.820947471e-01);
-    return t * q;
-#else
-    return al_erfcx(x);
-#endif
-}
-
 // erfc(|x|).
 real al_pmf_erfc_abs(real x) {
-    return al_pmf_erfcx(abs(x)) * al_exp(-x * x);
+    return al_erfcx_fast(abs(x)) * al_exp(-x * x);
 }
 
 // The sliver between a chord [ta, tb] (arc angle from the foot of n, c = n.foot) and

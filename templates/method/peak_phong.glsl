@@ -97,8 +97,7 @@ real al_ellipse_q_integral(real ag, real af, real bg, real bf, real dtau, real a
     real a0 = !near_one ? a : (a < AL_R(1.0) ? AL_R(0.95) : AL_R(1.05));
     real q0 = al_ellipse_q_at(ag, af, bg, bf, dtau, a0, squared);
     if (!near_one) return q0;
-    real q1 = AL_R(0.5) * dtau +
-              AL_R(0.5) * (bg * bf / (bg * bg + bf * bf) - ag * af / (ag * ag + af * af));
+    real q1 = AL_R(0.5) * (dtau + bg * bf - ag * af);  // (g, f) of unit ends: sin 2tau = 2 g f
     return q1 + (a - AL_R(1.0)) / (a0 - AL_R(1.0)) * (q0 - q1);
 }
 
@@ -310,11 +309,12 @@ real al_peak_edge_term(AlEdgeFrame E, AlArcShared S, real k, bool far_edge) {
     F.gt = al_peak_sample(s2, lc, k, F.tt2, far_edge);
     // One call of the fit for both forms (a call in each branch was two inlined copies of it,
     // with their own registers).
+    real ck = al_exp(k * lc);
     if (far_edge) {
-        F.gmax = s2 > AL_R(0.0) ? al_exp(k * lc) / s2 : AL_R(0.0);
+        F.gmax = s2 > AL_R(0.0) ? ck / s2 : AL_R(0.0);
         F.gmin = AL_R(0.0);
     } else {
-        F.gmax = s2 > AL_R(1e-30) ? -al_expm1(k * lc) / s2 : AL_R(0.5) * k;
+        F.gmax = s2 > AL_R(1e-30) ? -al_expm1_of(k * lc, ck) / s2 : AL_R(0.5) * k;
         F.gmin = AL_R(1.0);
     }
     real fit = al_peak_integral(E.ag, E.af, E.bg, E.bf, S.ta, dtau, F);
