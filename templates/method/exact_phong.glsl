@@ -29,9 +29,9 @@
 // uploaded case. precision=fp32: max 1.7e-5 (horizon), because a small result is a
 // sum of O(1) boundary terms and fp32 holds them to ~6e-8 absolute.
 // Cost: O(AL_NODES) per edge, independent of N. GPU cost (navi21, `arealight gpu-cost`,
-// the validation kernel, polygon): fp64 default 364 263 (797x the point light's 457,
-// 253 VGPRs: fp64 runs at 1/16 rate); precision=fp32 10 924 (23.9x); nodes=8 fp32 7 348
-// (16.1x; 2 223 instructions, 104 VGPRs), nodes=6 fp32 6 454 (14.1x; specular relL2 within 1e-4
+// the validation kernel, polygon; 2026-12-06): fp64 default 325 744 (713x the point light's
+// 457, 208 VGPRs: fp64 runs at 1/16 rate); precision=fp32 9 693 (21.2x); nodes=8 fp32 6 639
+// (14.5x; 1 945 instructions, 96 VGPRs), nodes=6 fp32 5 876 (12.9x; specular relL2 within 1e-4
 // but 5.6e-3 on the stress set, one glossy case 5.8% off), of which the clip and the diffuse are ~2 300.
 // Curved lights (disk, sphere, ellipsoid): al_lobe_conic below integrates the parts
 // of their curved boundary with the same forms (light/ellipse_clip.glsl, light/ellipse.glsl).

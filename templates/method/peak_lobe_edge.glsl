@@ -39,8 +39,16 @@ AlLobeEdge al_lobe_edge(rvec3 a, rvec3 b, rvec3 m, rvec3 r, rvec3 n, real N) {
 #endif
     bool far_edge = E.far_edge;
     AlArcShared S = al_arc_shared(E);
+#ifdef AL_FIT_PAPER
     real t1 = al_peak_edge_term(E, S, N + AL_R(1.0), far_edge);
     real t0 = al_peak_edge_term(E, S, N, far_edge);
+#else
+    // Both exponents sample at the fit points of N + 1/2 (their own differ by ~1 / (2N) in
+    // tan^2): one log1p and one quotient a point for the two.
+    AlPeakPoints P = al_peak_points_for(E, S, N + AL_R(0.5), far_edge);
+    real t1 = al_peak_edge_term_at(E, S, N + AL_R(1.0), far_edge, P);
+    real t0 = al_peak_edge_term_at(E, S, N, far_edge, P);
+#endif
 #ifdef AL_FIT_PAPER
     // x^N: max c^N, min 0, exact half width cos^2 tau_w = 2^(-2/N), where g = c^N / 2;
     // the tail sample at tan(tau_t) = 2 tan(tau_w).

@@ -20,9 +20,9 @@
 //
 // GPU cost (navi21, `arealight gpu-cost`, the validation kernel, polygon, against the
 // point light's 498-573; with AL_FAST_ARC, common/common.glsl, the one-lobe loop unrolled,
-// each arc's shared terms once and GGX's spread factor, 2026-12-06): lorentz 15 518 /
-// 15 524 / 20 478 (blinn / beckmann / ggx; 27-41x), pearson 17 613 / 17 618 / 24 667
-// (31-49.5x), ellipsoid 17 776 / 17 782 / 24 994 (31-50.2x).
+// each arc's shared terms once, GGX's spread factor and the fits' one fixed-point step,
+// 2026-12-06): lorentz 15 457 / 15 463 / 20 357 (blinn / beckmann / ggx; 27-41x), pearson
+// 17 415 / 17 421 / 24 272 (30-48.7x), ellipsoid 17 476 / 17 481 / 24 394 (30-49.0x).
 //
 // The paper's formulas, checked numerically (the copy we read garbles some):
 // - eq. 23: int D_Blinn dh = (N+2)/(2 pi) int (n.h)^N dh = (N+2)/(N+1) mu_N. As printed.

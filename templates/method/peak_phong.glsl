@@ -44,11 +44,11 @@
 //   - (b (b-1) / 4) sin(2 tau) / (sin^2 tau + b cos^2 tau) (eq. 17 prints that
 //   denominator as "2c"; differentiating checks it).
 // fit=tuned (default): the fit points above; pearson solves b through the fit
-// point by two fixed-point steps of P_P(tau_w) = P_min(b) + y (1 - P_min(b)) from
+// point by one fixed-point step of P_P(tau_w) = P_min(b) + y (1 - P_min(b)) from
 // b = (y^(-1/2) - 1) / tau_w^2 (b = a/2 as printed missed the sample), tail sample
 // at tan(tau_t) = 2 tan(tau_w); the ellipsoid blends the ellipse with the squared
 // ellipse through the fit point (P_E(tau_w) = p gives b = p t / (1 + t - p),
-// t = tan^2 tau_w; two fixed-point steps for P_E^2 = b^2 + y (1 - b^2)) at the same
+// t = tan^2 tau_w; one fixed-point step for P_E^2 = b^2 + y (1 - b^2)) at the same
 // tail point. Measured on the public typical set, moment relL2 (floor 1e-2): single
 // ellipse 5.7e-3, blend 3.0e-3.
 // fit=paper: Lecocq et al. 2016 as printed but for its errors: near form on every edge, no
@@ -58,9 +58,10 @@
 // b = a (2.1 + 1.28 x_w / x_w(0)) (ellipsoid), tail point eq. 14, alpha clamped.
 // Measured error: see docs/methods.md (arealight report). GPU cost (navi21, `arealight
 // gpu-cost`, the validation kernel, polygon, against the point light's 457; with
-// AL_FAST_ARC, common/common.glsl; 2026-12-06): lorentz 7 716 (16.9x), fit=paper 5 268
-// (11.5x); pearson 8 764 (19.2x), fit=paper 7 110 (15.6x); ellipsoid 8 845 (19.4x),
-// fit=paper 7 526 (16.5x): one edge loop, counted by ACO as 8 iterations of ~1 000 cycles.
+// AL_FAST_ARC, common/common.glsl; 2026-12-06, with method/peak_lobe_edge.glsl's closed-form z
+// and 6-node low-N rule): lorentz 6 591 (14.4x), fit=paper 5 089 (11.1x); pearson 7 440
+// (16.3x), fit=paper 6 937 (15.2x); ellipsoid 7 470 (16.3x), fit=paper 7 236 (15.8x): one
+// edge loop, counted by ACO as 8 iterations of ~850 cycles.
 
 #define AL_PEAK_LOG_FAR AL_R(-2.3)
 // Integral over the arc of the ellipse's Q = a cos^2 / (sin^2 + a cos^2) =
@@ -180,13 +181,12 @@ real al_peak_integral(real ag, real af, real bg, real bf, real ta, real dtau, Al
 #ifdef AL_FIT_PAPER
     real b = AL_R(0.5) * a;
 #else
-    // P_P(tau_w) = P_min(b) + y (1 - P_min(b)) by fixed-point steps from P_min = 0.
+    // P_P(tau_w) = P_min(b) + y (1 - P_min(b)) by one fixed-point step from P_min = 0 (a
+    // second moved the public sets' relL2 by <= 1.5%, and cost ggx pearson 1%, navi21).
     real b = max((AL_R(1.0) / sqrt(y) - AL_R(1.0)) / (tw * tw), AL_R(0.05));
-    for (int it = 0; it < 2; ++it) {
-        real m = AL_R(1.0) / (AL_R(1.0) + b * quarter_pi2);
-        real target = m * m + y * (AL_R(1.0) - m * m);
-        b = max((AL_R(1.0) / sqrt(target) - AL_R(1.0)) / (tw * tw), AL_R(0.05));
-    }
+    real m = AL_R(1.0) / (AL_R(1.0) + b * quarter_pi2);
+    real target = m * m + y * (AL_R(1.0) - m * m);
+    b = max((AL_R(1.0) / sqrt(target) - AL_R(1.0)) / (tw * tw), AL_R(0.05));
 #endif
     real tt = al_atan2(sqrt(F.tt2), AL_R(1.0));
     real yt = (F.gt - F.gmin) / span;
@@ -205,14 +205,13 @@ real al_peak_integral(real ag, real af, real bg, real bf, real ta, real dtau, Al
 #else
     // Squared ellipse through the fit point: P_E(tau_w) = p solves
     // b = p t / (1 + t - p), t = tan^2 tau_w, and P_E^2 = b^2 + y (1 - b^2) fixes p;
-    // two fixed-point steps from b^2 = 0. y <= 1 - 1e-6 keeps p <= 1 - 5e-7 and so b < 1
-    // and 1 + t - p > 0: no guard on the quotient, and only b's floor (t = 0 gives b = 0).
+    // one fixed-point step from b^2 = 0 (as pearson's). y <= 1 - 1e-6 keeps p <= 1 - 5e-7 and
+    // so b < 1 and 1 + t - p > 0: no guard on the quotient, and only b's floor (t = 0 gives
+    // b = 0).
     real p = sqrt(y);
     real b = max(p * F.tw2 / (AL_R(1.0) + F.tw2 - p), AL_R(1e-12));
-    for (int it = 0; it < 2; ++it) {
-        p = sqrt(y + (AL_R(1.0) - y) * b * b);
-        b = max(p * F.tw2 / (AL_R(1.0) + F.tw2 - p), AL_R(1e-12));
-    }
+    p = sqrt(y + (AL_R(1.0) - y) * b * b);
+    b = max(p * F.tw2 / (AL_R(1.0) + F.tw2 - p), AL_R(1e-12));
 #endif
     real yt = (F.gt - F.gmin) / span;
     real qe = a / (F.tt2 + a);
@@ -276,37 +275,63 @@ AlArcShared al_arc_shared(AlEdgeFrame E) {
     real sin2 = S.tan1 * S.tan1 / (AL_R(1.0) + S.tan1 * S.tan1);
     S.inv_omx2 = AL_R(1.0) / (S.s2 + (AL_R(1.0) - S.s2) * sin2);
     S.lambda0 = AL_R(2.0) * S.x1 * S.x1 * S.tan1 * S.inv_omx2;
-    S.lx1 = al_log(max(S.x1, AL_R(1e-30)));
+    // Beside the foot the nearer end holds x's maximum on the arc: log x1 is the far test's
+    // al_arc_log_x_max, which the compiler then forms once for both.
+    S.lx1 = al_arc_log_x_max(E);
     return S;
 }
 
-// The integrand at tan^2(tau) = t2, from s^2 and log c: the near form
-// (1 - x^k) / (1 - x^2), or the far form x^k / (1 - x^2). 1 - x^2 =
-// (s^2 + t2) / (1 + t2) without cancellation, log x = log c - log1p(t2) / 2.
-real al_peak_sample(real s2, real lc, real k, real t2, bool far_edge) {
-    real lx = lc - AL_R(0.5) * al_log1p(t2);
-    return (far_edge ? al_exp(k * lx) : -al_expm1(k * lx)) * (AL_R(1.0) + t2) / (s2 + t2);
+// Where a fit samples its integrand, the fit point tau_w and the tail point tau_t: tan^2,
+// log x (= log c - log1p(tan^2) / 2) and 1 / (1 - x^2) (= (1 + tan^2) / (s^2 + tan^2),
+// without cancellation) at each. They do not depend on the exponent: Phong's two exponents
+// N + 1 and N share one set (method/peak_lobe_edge.glsl).
+struct AlPeakPoints {
+    real tw2, lxw, iw;
+    real tt2, lxt, it;
+};
+AlPeakPoints al_peak_points(AlArcShared S, real tw2, real tt2) {
+    AlPeakPoints P;
+    P.tw2 = tw2;
+    P.lxw = S.lc - AL_R(0.5) * al_log1p(tw2);
+    P.iw = (AL_R(1.0) + tw2) / (S.s2 + tw2);
+    P.tt2 = tt2;
+    P.lxt = S.lc - AL_R(0.5) * al_log1p(tt2);
+    P.it = (AL_R(1.0) + tt2) / (S.s2 + tt2);
+    return P;
+}
+
+// The fit points for exponent k: fit=tuned's estimate of the half-maximum point (the header)
+// and its tail point at twice its tangent, or the paper's eq. 7 and eq. 14.
+AlPeakPoints al_peak_points_for(AlEdgeFrame E, AlArcShared S, real k, bool far_edge) {
+#ifdef AL_FIT_PAPER
+    real xw = al_paper_half_width(E.c, k);
+    real txw = tan(xw), txt = tan(al_paper_tail(xw));
+    return al_peak_points(S, txw * txw, txt * txt);
+#else
+    real tw2 = far_edge ? AL_R(1.38629436111989061883) * S.s2 / (k * S.s2 + AL_R(2.0))
+                        : S.s2 + AL_R(2.0) / k;
+    return al_peak_points(S, tw2, AL_R(4.0) * tw2);
+#endif
+}
+
+// The integrand for exponent k at a point with log x = lx and 1 / (1 - x^2) = inv_omx2: the
+// near form (1 - x^k) / (1 - x^2), or the far form x^k / (1 - x^2).
+real al_peak_sample(real k, real lx, real inv_omx2, bool far_edge) {
+    return (far_edge ? al_exp(k * lx) : -al_expm1(k * lx)) * inv_omx2;
 }
 
 // Fitted integral of the near-form integrand (1 - x^k) / (1 - x^2) (far = false)
-// or of x^k / (1 - x^2) (far = true) over the arc of E (S: al_arc_shared of it).
-real al_peak_edge_term(AlEdgeFrame E, AlArcShared S, real k, bool far_edge) {
+// or of x^k / (1 - x^2) (far = true) over the arc of E (S: al_arc_shared of it), sampled at
+// the points P.
+real al_peak_edge_term_at(AlEdgeFrame E, AlArcShared S, real k, bool far_edge, AlPeakPoints P) {
     real s2 = S.s2;
     real lc = S.lc;
     real dtau = S.dtau;
     AlPeakFit F;
-#ifdef AL_FIT_PAPER
-    real xw = al_paper_half_width(E.c, k);
-    real txw = tan(xw), txt = tan(al_paper_tail(xw));
-    F.tw2 = txw * txw;
-    F.tt2 = txt * txt;
-#else
-    F.tw2 = far_edge ? AL_R(1.38629436111989061883) * s2 / (k * s2 + AL_R(2.0))
-                     : s2 + AL_R(2.0) / k;
-    F.tt2 = AL_R(4.0) * F.tw2;
-#endif
-    F.gw = al_peak_sample(s2, lc, k, F.tw2, far_edge);
-    F.gt = al_peak_sample(s2, lc, k, F.tt2, far_edge);
+    F.tw2 = P.tw2;
+    F.tt2 = P.tt2;
+    F.gw = al_peak_sample(k, P.lxw, P.iw, far_edge);
+    F.gt = al_peak_sample(k, P.lxt, P.it, far_edge);
     // One call of the fit for both forms (a call in each branch was two inlined copies of it,
     // with their own registers).
     real ck = al_exp(k * lc);
@@ -323,4 +348,9 @@ real al_peak_edge_term(AlEdgeFrame E, AlArcShared S, real k, bool far_edge) {
     real g1 = al_exp(k * S.lx1) * S.inv_omx2;
     real lambda = k * S.tan1 + S.lambda0;
     return min(fit, al_tail_bound(g1, max(lambda, AL_R(0.0)), dtau));
+}
+
+// al_peak_edge_term_at at exponent k's own fit points.
+real al_peak_edge_term(AlEdgeFrame E, AlArcShared S, real k, bool far_edge) {
+    return al_peak_edge_term_at(E, S, k, far_edge, al_peak_points_for(E, S, k, far_edge));
 }
