@@ -369,6 +369,38 @@ TEST_CASE("curved lights: the point baseline's solid angle is the sphere's cap",
     }
 }
 
+TEST_CASE("curved lights: a sphere that holds a sharp Phong lobe whole, both backends",
+          "[curved][vulkan]") {
+    // The public stress case pub-stress-huge-sphere-phong-030 (N = 9 769, moment 1): the
+    // spinning polygon's arcs lie far from r, where the closed-form z integral
+    // (templates/method/phong_lobe_z.glsl) once returned NaN on lavapipe (specular 0 against
+    // 0.2239) while the mirror was right. Measured now: 0.223915 on both, as the oracle.
+    CaseSet set;
+    Case c;
+    c.id = "huge-sphere-sharp-lobe";
+    c.p = {-0.025507209128091013, 1.8907197182460278, -1.0905231447966883};
+    c.n = {-1.714579748790992, -1.9872856163145463, -0.12415872704793358};
+    c.v = {-2.125518666356402, 1.1355033127187875, -0.6491389951463112};
+    c.light.type = LightType::Sphere;
+    c.light.center = {-1.0264066403521948, 0.90444919704567, -0.7456508151243197};
+    c.light.radius = 1.4467556333884029;
+    c.material.distribution = Distribution::Phong;
+    c.material.exponent = 9768.541997423543;
+    set.cases.push_back(c);
+    const auto ref = oracle(set);
+    for (const char* method : {"lorentz", "pearson", "ellipsoid"}) {
+        for (Backend b : kBackends) {
+            const std::string variant =
+                std::string("dist=phong,method=") + method + ",light=sphere";
+            const ResultSet out = run(b, variant, set);
+            const double want = *ref.at(c.id).specular;
+            INFO(variant << " on " << to_string(b) << ": specular " << *out.results[0].specular
+                         << ", oracle " << want);
+            CHECK(rel_err(*out.results[0].specular, want) <= kSameLightTol);
+        }
+    }
+}
+
 TEST_CASE("curved lights: the spinning polygon against the oracle", "[curved][vulkan]") {
     // relL2 (score's metric) of moment and specular (Phong) or specular (microfacets)
     // over seeded curved lights of each type; bars about 1.5x the worse backend's

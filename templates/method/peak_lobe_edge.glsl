@@ -19,6 +19,7 @@
 // pentagon, where 8 nodes left z 1e-3 off); 600 horizon-peak polygons (gen_curved_cases.py
 // 600 7 --kind horizon-peak) 2.39e-3 -> 2.26e-3 (4 nodes: 2.96e-3; 5: 2.44e-3). GPU cost
 // (navi21): lorentz 7 239 -> 6 721 cycles a wave, both arms of the branch counted.
+// - t_(N+1) and t_N from one fit (al_peak_edge_terms, method/peak_phong.glsl; fit=tuned).
 // Domain: real N >= 1, any arc.
 #define AL_PEAK_RULE_BELOW AL_R(32.0)
 
@@ -43,11 +44,8 @@ AlLobeEdge al_lobe_edge(rvec3 a, rvec3 b, rvec3 m, rvec3 r, rvec3 n, real N) {
     real t1 = al_peak_edge_term(E, S, N + AL_R(1.0), far_edge);
     real t0 = al_peak_edge_term(E, S, N, far_edge);
 #else
-    // Both exponents sample at the fit points of N + 1/2 (their own differ by ~1 / (2N) in
-    // tan^2): one log1p and one quotient a point for the two.
-    AlPeakPoints P = al_peak_points_for(E, S, N + AL_R(0.5), far_edge);
-    real t1 = al_peak_edge_term_at(E, S, N + AL_R(1.0), far_edge, P);
-    real t0 = al_peak_edge_term_at(E, S, N, far_edge, P);
+    rvec2 tt = al_peak_edge_terms(E, S, N, far_edge);
+    real t1 = tt.x, t0 = tt.y;
 #endif
 #ifdef AL_FIT_PAPER
     // x^N: max c^N, min 0, exact half width cos^2 tau_w = 2^(-2/N), where g = c^N / 2;

@@ -21,8 +21,8 @@
 // GPU cost (navi21, `arealight gpu-cost`, the validation kernel, polygon, against the
 // point light's 498-573; with AL_FAST_ARC, common/common.glsl, the one-lobe loop unrolled,
 // each arc's shared terms once, GGX's spread factor and the fits' one fixed-point step,
-// 2026-12-06): lorentz 15 457 / 15 463 / 20 357 (blinn / beckmann / ggx; 27-41x), pearson
-// 17 415 / 17 421 / 24 272 (30-48.7x), ellipsoid 17 476 / 17 481 / 24 394 (30-49.0x).
+// 2026-12-06): lorentz 15 467 / 15 473 / 20 377 (blinn / beckmann / ggx; 27-41x), pearson
+// 17 425 / 17 431 / 24 293 (30-48.8x), ellipsoid 17 486 / 17 492 / 24 414 (30-49.0x).
 //
 // The paper's formulas, checked numerically (the copy we read garbles some):
 // - eq. 23: int D_Blinn dh = (N+2)/(2 pi) int (n.h)^N dh = (N+2)/(N+1) mu_N. As printed.

@@ -59,9 +59,10 @@
 // Measured error: see docs/methods.md (arealight report). GPU cost (navi21, `arealight
 // gpu-cost`, the validation kernel, polygon, against the point light's 457; with
 // AL_FAST_ARC, common/common.glsl; 2026-12-06, with method/peak_lobe_edge.glsl's closed-form z
-// and 6-node low-N rule): lorentz 6 591 (14.4x), fit=paper 5 089 (11.1x); pearson 7 440
-// (16.3x), fit=paper 6 937 (15.2x); ellipsoid 7 470 (16.3x), fit=paper 7 236 (15.8x): one
-// edge loop, counted by ACO as 8 iterations of ~850 cycles.
+// and 6-node low-N rule, and one fit for both exponents, al_peak_edge_terms): lorentz 6 295
+// (13.8x), fit=paper 5 089 (11.1x); pearson 6 785 (14.8x), fit=paper 6 937 (15.2x); ellipsoid
+// 6 800 (14.9x), fit=paper 7 236 (15.8x): one edge loop, counted by ACO as 8 iterations of
+// ~800 cycles.
 
 #define AL_PEAK_LOG_FAR AL_R(-2.3)
 // Integral over the arc of the ellipse's Q = a cos^2 / (sin^2 + a cos^2) =
@@ -162,12 +163,9 @@ real al_blend_alpha(real q_wide, real q_narrow, real yt) {
     return clamp((q_narrow - yt) / den, AL_R(0.0), AL_R(1.0));
 }
 
-// Integral over [tau_a, tau_b] (tau = atan(g, f) of each end, ta = tau_a, dtau = tau_b -
-// tau_a >= 0) of the fit of g through F. Finite for any input; a flat g integrates as
-// g_min dtau.
-real al_peak_integral(real ag, real af, real bg, real bf, real ta, real dtau, AlPeakFit F) {
+// Integral over the arc of the fit's shape Q alone, in [0, dtau] (F not flat: al_peak_flat).
+real al_peak_q_integral(real ag, real af, real bg, real bf, real ta, real dtau, AlPeakFit F) {
     real span = F.gmax - F.gmin;
-    if (!(abs(span) > AL_R(1e-7) * max(abs(F.gmax), abs(F.gmin)))) return F.gmin * dtau;
     real y = clamp((F.gw - F.gmin) / span, AL_R(1e-6), AL_R(0.999999));
 #if defined(AL_METHOD_LORENTZ) || defined(AL_METHOD_PEARSON)
     // Q_L(tau_w) = y solved for a (Lecocq et al. 2016, after eq. 11), tau_w the angle. A g
@@ -224,7 +222,20 @@ real al_peak_integral(real ag, real af, real bg, real bf, real ta, real dtau, Al
 #endif
     // Q lies in [0, 1], so its integral in [0, dtau]: rounding of the closed forms
     // on short arcs must not push the fit below g_min or above g_max.
-    return F.gmin * dtau + span * clamp(integral_q, AL_R(0.0), dtau);
+    return clamp(integral_q, AL_R(0.0), dtau);
+}
+
+// Whether g is flat on the arc to working precision (its max and min within 1e-7).
+bool al_peak_flat(real gmax, real gmin) {
+    return !(abs(gmax - gmin) > AL_R(1e-7) * max(abs(gmax), abs(gmin)));
+}
+
+// Integral over [tau_a, tau_b] (tau = atan(g, f) of each end, ta = tau_a, dtau = tau_b -
+// tau_a >= 0) of the fit of g through F. Finite for any input; a flat g integrates as
+// g_min dtau.
+real al_peak_integral(real ag, real af, real bg, real bf, real ta, real dtau, AlPeakFit F) {
+    if (al_peak_flat(F.gmax, F.gmin)) return F.gmin * dtau;
+    return F.gmin * dtau + (F.gmax - F.gmin) * al_peak_q_integral(ag, af, bg, bf, ta, dtau, F);
 }
 
 // Upper bound of the integral over an arc that lies on one side of the foot, for a g
@@ -265,7 +276,7 @@ struct AlArcShared {
 };
 AlArcShared al_arc_shared(AlEdgeFrame E) {
     AlArcShared S;
-    S.s2 = E.s * E.s;
+    S.s2 = min(E.s * E.s, AL_R(1.0));  // |r.m| may round above 1: keep log c a number
     S.lc = AL_R(0.5) * al_log1p(-S.s2);
     S.ta = al_atan2(E.ag, E.af);
     S.dtau = max(al_atan2(E.bg, E.bf) - S.ta, AL_R(0.0));
@@ -283,8 +294,7 @@ AlArcShared al_arc_shared(AlEdgeFrame E) {
 
 // Where a fit samples its integrand, the fit point tau_w and the tail point tau_t: tan^2,
 // log x (= log c - log1p(tan^2) / 2) and 1 / (1 - x^2) (= (1 + tan^2) / (s^2 + tan^2),
-// without cancellation) at each. They do not depend on the exponent: Phong's two exponents
-// N + 1 and N share one set (method/peak_lobe_edge.glsl).
+// without cancellation) at each; al_peak_points_for places them for an exponent.
 struct AlPeakPoints {
     real tw2, lxw, iw;
     real tt2, lxt, it;
@@ -320,34 +330,70 @@ real al_peak_sample(real k, real lx, real inv_omx2, bool far_edge) {
     return (far_edge ? al_exp(k * lx) : -al_expm1(k * lx)) * inv_omx2;
 }
 
-// Fitted integral of the near-form integrand (1 - x^k) / (1 - x^2) (far = false)
-// or of x^k / (1 - x^2) (far = true) over the arc of E (S: al_arc_shared of it), sampled at
-// the points P.
-real al_peak_edge_term_at(AlEdgeFrame E, AlArcShared S, real k, bool far_edge, AlPeakPoints P) {
-    real s2 = S.s2;
-    real lc = S.lc;
-    real dtau = S.dtau;
+// The integrand's maximum and minimum on its great circle for exponent k: (c^k / s^2, 0) far,
+// ((1 - c^k) / s^2, 1) near (-> k / 2 as s -> 0).
+rvec2 al_peak_extremes(AlArcShared S, real k, bool far_edge) {
+    real ck = al_exp(k * S.lc);
+    rvec2 e;
+    if (far_edge) {
+        e.x = S.s2 > AL_R(0.0) ? ck / S.s2 : AL_R(0.0);
+        e.y = AL_R(0.0);
+    } else {
+        e.x = S.s2 > AL_R(1e-30) ? -al_expm1_of(k * S.lc, ck) / S.s2 : AL_R(0.5) * k;
+        e.y = AL_R(1.0);
+    }
+    return e;
+}
+
+// A far arc beside the foot: the smaller of the fit and al_tail_bound.
+real al_peak_tail_min(real fit, AlArcShared S, real k, bool far_edge) {
+    if (!far_edge || !S.beside) return fit;
+    // g = x^k / (1 - x^2); -d log g = k tan + 2 x^2 tan / (1 - x^2).
+    real g1 = al_exp(k * S.lx1) * S.inv_omx2;
+    real lambda = k * S.tan1 + S.lambda0;
+    return min(fit, al_tail_bound(g1, max(lambda, AL_R(0.0)), S.dtau));
+}
+
+// The fit through the samples of exponent k at the points P.
+AlPeakFit al_peak_fit_at(AlArcShared S, real k, bool far_edge, AlPeakPoints P) {
     AlPeakFit F;
     F.tw2 = P.tw2;
     F.tt2 = P.tt2;
     F.gw = al_peak_sample(k, P.lxw, P.iw, far_edge);
     F.gt = al_peak_sample(k, P.lxt, P.it, far_edge);
-    // One call of the fit for both forms (a call in each branch was two inlined copies of it,
-    // with their own registers).
-    real ck = al_exp(k * lc);
-    if (far_edge) {
-        F.gmax = s2 > AL_R(0.0) ? ck / s2 : AL_R(0.0);
-        F.gmin = AL_R(0.0);
-    } else {
-        F.gmax = s2 > AL_R(1e-30) ? -al_expm1_of(k * lc, ck) / s2 : AL_R(0.5) * k;
-        F.gmin = AL_R(1.0);
-    }
-    real fit = al_peak_integral(E.ag, E.af, E.bg, E.bf, S.ta, dtau, F);
-    if (!far_edge || !S.beside) return fit;
-    // g = x^k / (1 - x^2); -d log g = k tan + 2 x^2 tan / (1 - x^2).
-    real g1 = al_exp(k * S.lx1) * S.inv_omx2;
-    real lambda = k * S.tan1 + S.lambda0;
-    return min(fit, al_tail_bound(g1, max(lambda, AL_R(0.0)), dtau));
+    rvec2 ext = al_peak_extremes(S, k, far_edge);
+    F.gmax = ext.x;
+    F.gmin = ext.y;
+    return F;
+}
+
+// Fitted integral of the near-form integrand (1 - x^k) / (1 - x^2) (far = false)
+// or of x^k / (1 - x^2) (far = true) over the arc of E (S: al_arc_shared of it), sampled at
+// the points P. One call of the fit for both forms (a call in each branch was two inlined
+// copies of it, with their own registers).
+real al_peak_edge_term_at(AlEdgeFrame E, AlArcShared S, real k, bool far_edge, AlPeakPoints P) {
+    real fit = al_peak_integral(E.ag, E.af, E.bg, E.bf, S.ta, S.dtau,
+                                al_peak_fit_at(S, k, far_edge, P));
+    return al_peak_tail_min(fit, S, k, far_edge);
+}
+
+// Phong's two terms (exponents N + 1 and N) from one fit, N's: the shape Q fitted to
+// exponent N, between each exponent's own maximum and minimum (their shapes' widths differ by
+// ~1 / (2N) relative). x = t_(N+1), y = t_N. Against a fit per exponent (public sets, CPU
+// mirror): specular unchanged to 3 digits (t_N is N's own fit), moment relL2 typical 2.56e-3
+// -> 2.49e-3, horizon 4.96e-4 -> 5.32e-4, degenerate 3.82e-3 -> 3.41e-3 (pearson); lorentz
+// horizon 1.04e-3 -> 1.14e-3. The shape at N + 1/2 for both moved specular by +7% (typical).
+// GPU cost: pearson 7 440 -> 6 785 cycles a wave (navi21).
+rvec2 al_peak_edge_terms(AlEdgeFrame E, AlArcShared S, real N, bool far_edge) {
+    AlPeakFit F = al_peak_fit_at(S, N, far_edge, al_peak_points_for(E, S, N, far_edge));
+    real q = al_peak_flat(F.gmax, F.gmin)
+                 ? AL_R(0.0)
+                 : al_peak_q_integral(E.ag, E.af, E.bg, E.bf, S.ta, S.dtau, F);
+    real k1 = N + AL_R(1.0);
+    rvec2 e1 = al_peak_extremes(S, k1, far_edge);
+    real fit1 = e1.y * S.dtau + (al_peak_flat(e1.x, e1.y) ? AL_R(0.0) : (e1.x - e1.y) * q);
+    real fit0 = F.gmin * S.dtau + (al_peak_flat(F.gmax, F.gmin) ? AL_R(0.0) : (F.gmax - F.gmin) * q);
+    return rvec2(al_peak_tail_min(fit1, S, k1, far_edge), al_peak_tail_min(fit0, S, N, far_edge));
 }
 
 // al_peak_edge_term_at at exponent k's own fit points.

@@ -32,5 +32,8 @@ real al_lobe_z(AlEdgeFrame E, real lc, real N) {
     // The arc runs from a to b in increasing tau: a beyond the foot with b before it is empty.
     real v = a_pos == b_pos ? (b_pos ? qa - qb : qb - qa)
                             : (b_pos ? AL_R(2.0) * c0 - qa - qb : AL_R(0.0));
-    return al_exp(N * lc) * max(v, AL_R(0.0)) * inversesqrt(m2);
+    // c^N of a NaN log c (an arc whose pole is r, to rounding) counts as 0, as the fits' flat
+    // test takes it.
+    real cn = al_exp(N * lc);
+    return cn > AL_R(0.0) ? cn * max(v, AL_R(0.0)) * inversesqrt(m2) : AL_R(0.0);
 }
