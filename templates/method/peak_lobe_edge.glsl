@@ -27,10 +27,7 @@
 // same quantities as the exact method's.
 AlLobeEdge al_lobe_edge(rvec3 a, rvec3 b, rvec3 m, rvec3 r, rvec3 n, real N) {
 #ifndef AL_FIT_PAPER
-    // One frame and one pass of the rule serve both regimes (the frames differed only in
-    // the far test's threshold, and the z integral is the rule's third sum): a second
-    // rule loop cost a GPU 12% of this method (lorentz 9 509 -> 8 374 cycles a wave,
-    // navi21), the same sums either way.
+    // One frame serves both regimes (they differ only in the far test's threshold).
     bool low = N < AL_PEAK_RULE_BELOW;
     AlEdgeFrame E = al_edge_frame(a, b, m, r, N, low ? AL_R(-6.9) : AL_PEAK_LOG_FAR);
     if (low) return al_lobe_sums(E, al_lobe_rule(E, N), n, m);  // the exact method's forms
@@ -43,11 +40,6 @@ AlLobeEdge al_lobe_edge(rvec3 a, rvec3 b, rvec3 m, rvec3 r, rvec3 n, real N) {
 #ifdef AL_FIT_PAPER
     real t1 = al_peak_edge_term(E, S, N + AL_R(1.0), far_edge);
     real t0 = al_peak_edge_term(E, S, N, far_edge);
-#else
-    rvec2 tt = al_peak_edge_terms(E, S, N, far_edge);
-    real t1 = tt.x, t0 = tt.y;
-#endif
-#ifdef AL_FIT_PAPER
     // x^N: max c^N, min 0, exact half width cos^2 tau_w = 2^(-2/N), where g = c^N / 2;
     // the tail sample at tan(tau_t) = 2 tan(tau_w).
     real lc = S.lc;
@@ -62,6 +54,8 @@ AlLobeEdge al_lobe_edge(rvec3 a, rvec3 b, rvec3 m, rvec3 r, rvec3 n, real N) {
     F.gt = al_exp(N * (lc - AL_R(0.5) * al_log1p(F.tt2)));
     real tz = al_peak_integral(E.ag, E.af, E.bg, E.bf, S.ta, S.dtau, F);
 #else
+    rvec2 tt = al_peak_edge_terms(E, S, N, far_edge);
+    real t1 = tt.x, t0 = tt.y;
     real tz = al_lobe_z(E, S.lc, N);
 #endif
     AlLobeEdge e;

@@ -565,8 +565,8 @@ rvec2 al_mf_end(AlMoments M) {
 #else
         real sig = AL_R(0.70710678118654752) * M.d.width;
         real z = -M.nv / ((AL_R(1.0) + sv) * sig);
-        real q = AL_R(0.5) * (z >= AL_R(0.0) ? al_pmf_erfc_abs(z * AL_R(0.70710678118654752))
-                                             : AL_R(2.0) - al_pmf_erfc_abs(z * AL_R(0.70710678118654752)));
+        // z <= 0 (n.v > 0 here): Q(z) = 1 - erfc(|z| / sqrt 2) / 2.
+        real q = AL_R(1.0) - AL_R(0.5) * al_pmf_erfc_abs(z * AL_R(0.70710678118654752));
         real xbar = sig * AL_R(0.39894228040143268) * al_exp(-AL_R(0.5) * z * z) / max(q, AL_R(1e-30));
 #endif
         real g = AL_PMF_GRAZING2 / (AL_PMF_GRAZING2 + M.nv * M.nv) * beta;

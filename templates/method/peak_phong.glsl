@@ -292,42 +292,12 @@ AlArcShared al_arc_shared(AlEdgeFrame E) {
     return S;
 }
 
-// Where a fit samples its integrand, the fit point tau_w and the tail point tau_t: tan^2,
-// log x (= log c - log1p(tan^2) / 2) and 1 / (1 - x^2) (= (1 + tan^2) / (s^2 + tan^2),
-// without cancellation) at each; al_peak_points_for places them for an exponent.
-struct AlPeakPoints {
-    real tw2, lxw, iw;
-    real tt2, lxt, it;
-};
-AlPeakPoints al_peak_points(AlArcShared S, real tw2, real tt2) {
-    AlPeakPoints P;
-    P.tw2 = tw2;
-    P.lxw = S.lc - AL_R(0.5) * al_log1p(tw2);
-    P.iw = (AL_R(1.0) + tw2) / (S.s2 + tw2);
-    P.tt2 = tt2;
-    P.lxt = S.lc - AL_R(0.5) * al_log1p(tt2);
-    P.it = (AL_R(1.0) + tt2) / (S.s2 + tt2);
-    return P;
-}
-
-// The fit points for exponent k: fit=tuned's estimate of the half-maximum point (the header)
-// and its tail point at twice its tangent, or the paper's eq. 7 and eq. 14.
-AlPeakPoints al_peak_points_for(AlEdgeFrame E, AlArcShared S, real k, bool far_edge) {
-#ifdef AL_FIT_PAPER
-    real xw = al_paper_half_width(E.c, k);
-    real txw = tan(xw), txt = tan(al_paper_tail(xw));
-    return al_peak_points(S, txw * txw, txt * txt);
-#else
-    real tw2 = far_edge ? AL_R(1.38629436111989061883) * S.s2 / (k * S.s2 + AL_R(2.0))
-                        : S.s2 + AL_R(2.0) / k;
-    return al_peak_points(S, tw2, AL_R(4.0) * tw2);
-#endif
-}
-
-// The integrand for exponent k at a point with log x = lx and 1 / (1 - x^2) = inv_omx2: the
-// near form (1 - x^k) / (1 - x^2), or the far form x^k / (1 - x^2).
-real al_peak_sample(real k, real lx, real inv_omx2, bool far_edge) {
-    return (far_edge ? al_exp(k * lx) : -al_expm1(k * lx)) * inv_omx2;
+// The integrand at tan^2(tau) = t2 for exponent k: the near form (1 - x^k) / (1 - x^2), or
+// the far form x^k / (1 - x^2), with log x = log c - log1p(t2) / 2 and 1 / (1 - x^2) =
+// (1 + t2) / (s^2 + t2) (no cancellation).
+real al_peak_sample(AlArcShared S, real k, real t2, bool far_edge) {
+    real lx = S.lc - AL_R(0.5) * al_log1p(t2);
+    return (far_edge ? al_exp(k * lx) : -al_expm1(k * lx)) * ((AL_R(1.0) + t2) / (S.s2 + t2));
 }
 
 // The integrand's maximum and minimum on its great circle for exponent k: (c^k / s^2, 0) far,
@@ -354,13 +324,23 @@ real al_peak_tail_min(real fit, AlArcShared S, real k, bool far_edge) {
     return min(fit, al_tail_bound(g1, max(lambda, AL_R(0.0)), S.dtau));
 }
 
-// The fit through the samples of exponent k at the points P.
-AlPeakFit al_peak_fit_at(AlArcShared S, real k, bool far_edge, AlPeakPoints P) {
+// The fit of exponent k: its samples at the fit point tau_w and the tail point tau_t
+// (fit=tuned: the estimate of the half-maximum point in the header and twice its tangent;
+// fit=paper: eq. 7 and eq. 14) and the integrand's extremes.
+AlPeakFit al_peak_fit(AlEdgeFrame E, AlArcShared S, real k, bool far_edge) {
     AlPeakFit F;
-    F.tw2 = P.tw2;
-    F.tt2 = P.tt2;
-    F.gw = al_peak_sample(k, P.lxw, P.iw, far_edge);
-    F.gt = al_peak_sample(k, P.lxt, P.it, far_edge);
+#ifdef AL_FIT_PAPER
+    real xw = al_paper_half_width(E.c, k);
+    real txw = tan(xw), txt = tan(al_paper_tail(xw));
+    F.tw2 = txw * txw;
+    F.tt2 = txt * txt;
+#else
+    F.tw2 = far_edge ? AL_R(1.38629436111989061883) * S.s2 / (k * S.s2 + AL_R(2.0))
+                     : S.s2 + AL_R(2.0) / k;
+    F.tt2 = AL_R(4.0) * F.tw2;
+#endif
+    F.gw = al_peak_sample(S, k, F.tw2, far_edge);
+    F.gt = al_peak_sample(S, k, F.tt2, far_edge);
     rvec2 ext = al_peak_extremes(S, k, far_edge);
     F.gmax = ext.x;
     F.gmin = ext.y;
@@ -368,12 +348,12 @@ AlPeakFit al_peak_fit_at(AlArcShared S, real k, bool far_edge, AlPeakPoints P) {
 }
 
 // Fitted integral of the near-form integrand (1 - x^k) / (1 - x^2) (far = false)
-// or of x^k / (1 - x^2) (far = true) over the arc of E (S: al_arc_shared of it), sampled at
-// the points P. One call of the fit for both forms (a call in each branch was two inlined
-// copies of it, with their own registers).
-real al_peak_edge_term_at(AlEdgeFrame E, AlArcShared S, real k, bool far_edge, AlPeakPoints P) {
-    real fit = al_peak_integral(E.ag, E.af, E.bg, E.bf, S.ta, S.dtau,
-                                al_peak_fit_at(S, k, far_edge, P));
+// or of x^k / (1 - x^2) (far = true) over the arc of E (S: al_arc_shared of it). One call of
+// the fit for both forms (a call in each branch was two inlined copies of it, with their own
+// registers).
+real al_peak_edge_term(AlEdgeFrame E, AlArcShared S, real k, bool far_edge) {
+    AlPeakFit F = al_peak_fit(E, S, k, far_edge);
+    real fit = al_peak_integral(E.ag, E.af, E.bg, E.bf, S.ta, S.dtau, F);
     return al_peak_tail_min(fit, S, k, far_edge);
 }
 
@@ -385,18 +365,15 @@ real al_peak_edge_term_at(AlEdgeFrame E, AlArcShared S, real k, bool far_edge, A
 // horizon 1.04e-3 -> 1.14e-3. The shape at N + 1/2 for both moved specular by +7% (typical).
 // GPU cost: pearson 7 440 -> 6 785 cycles a wave (navi21).
 rvec2 al_peak_edge_terms(AlEdgeFrame E, AlArcShared S, real N, bool far_edge) {
-    AlPeakFit F = al_peak_fit_at(S, N, far_edge, al_peak_points_for(E, S, N, far_edge));
+    AlPeakFit F = al_peak_fit(E, S, N, far_edge);
     real q = al_peak_flat(F.gmax, F.gmin)
                  ? AL_R(0.0)
                  : al_peak_q_integral(E.ag, E.af, E.bg, E.bf, S.ta, S.dtau, F);
     real k1 = N + AL_R(1.0);
     rvec2 e1 = al_peak_extremes(S, k1, far_edge);
     real fit1 = e1.y * S.dtau + (al_peak_flat(e1.x, e1.y) ? AL_R(0.0) : (e1.x - e1.y) * q);
-    real fit0 = F.gmin * S.dtau + (al_peak_flat(F.gmax, F.gmin) ? AL_R(0.0) : (F.gmax - F.gmin) * q);
+    real fit0 =
+        F.gmin * S.dtau + (al_peak_flat(F.gmax, F.gmin) ? AL_R(0.0) : (F.gmax - F.gmin) * q);
     return rvec2(al_peak_tail_min(fit1, S, k1, far_edge), al_peak_tail_min(fit0, S, N, far_edge));
 }
 
-// al_peak_edge_term_at at exponent k's own fit points.
-real al_peak_edge_term(AlEdgeFrame E, AlArcShared S, real k, bool far_edge) {
-    return al_peak_edge_term_at(E, S, k, far_edge, al_peak_points_for(E, S, k, far_edge));
-}
