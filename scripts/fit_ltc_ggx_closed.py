@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Closed-form GGX LTC coefficients: polynomials in the table's grid coordinates.
 
-Reads data/ltc/ltc_ggx.txt (64 x 64 cells, columns i j a b c d A B error; grid of
+Reads data/ltc/ltc_ggx.txt (64 x 64 cells, columns i j a b c d A B K error, K the
+second lobe's weight, 0 for GGX, which has one; grid of
 include/arealight/ltc_table.hpp: u = i / 63 over rho = sqrt(alpha), w = j / 63 with
 cos theta_v = 1 - w^2) and writes templates/method/ltc_ggx_fit.glsl, the functions that
 method=ltc,table=fit evaluates instead of sampling the two textures.
@@ -69,7 +70,7 @@ def read_table():
 
 
 def quantities(cell, alpha, w):
-    a, b, c, d, amp_a, amp_b, _ = cell
+    a, b, c, d, amp_a, amp_b = cell[:6]
     phi = math.atan2(b, a)
     n = math.hypot(a, b)
     den = a - b * d

@@ -49,6 +49,7 @@ AL_Z_WRAPPER
 #undef rvec4
 #undef AL_PRECISION_FP64
 #undef AL_R
+#undef AL_EXPM1_SERIES_BELOW  // common.glsl's; set again under AL_FAST_ARC below
 
 // The polygon peak variants' precision and forms: fp32, AL_FAST_ARC (common/common.glsl
 // defines it for a polygon light and a peak method).

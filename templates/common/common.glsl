@@ -185,6 +185,15 @@ real al_exp(real x) {
 #endif
 }
 
+// Below |z| = AL_EXPM1_SERIES_BELOW, exp(z) - 1 is its Taylor series (al_expm1_of);
+// beyond, exp(z) - 1 itself, which cannot cancel there. One threshold for both functions,
+// so that al_expm1 takes its exp exactly where al_expm1_of would use it.
+#ifdef AL_FAST_ARC
+#define AL_EXPM1_SERIES_BELOW AL_R(0.1)
+#else
+#define AL_EXPM1_SERIES_BELOW AL_R(0.5)
+#endif
+
 // exp(z) - 1 for z <= 0 (used for 1 - x^k), given ez = exp(z) where a caller has it.
 // Relative error a few ulp: Taylor for |z| < 1/2 (fp64 to z^16, < 1e-18; fp32 to z^8,
 // < 1e-9), ez - 1 beyond, where it cannot cancel.
@@ -192,12 +201,12 @@ real al_expm1_of(real z, real ez) {
 #ifdef AL_FAST_ARC
     // AL_FAST_ARC: Taylor to z^5 below |z| = 0.1 (truncation < 1.4e-8 relative), exp(z) - 1
     // beyond (rounding < 6.3e-7 relative): four FMAs fewer on each of a peak fit's paths.
-    if (abs(z) < AL_R(0.1))
+    if (abs(z) < AL_EXPM1_SERIES_BELOW)
         return z * (AL_R(1.0) + z * (AL_R(0.5) + z * (AL_R(1.0) / AL_R(6.0) +
                     z * (AL_R(1.0) / AL_R(24.0) + z * (AL_R(1.0) / AL_R(120.0))))));
     return ez - AL_R(1.0);
 #endif
-    if (abs(z) < AL_R(0.5)) {
+    if (abs(z) < AL_EXPM1_SERIES_BELOW) {
 #if AL_PRECISION_FP64
         real p = AL_R(1.0) / AL_R(20922789888000.0);
         p = p * z + AL_R(1.0) / AL_R(1307674368000.0);
@@ -225,12 +234,7 @@ real al_expm1_of(real z, real ez) {
 
 // exp(z) - 1 for z <= 0 (al_expm1_of), the exp only where the series does not serve.
 real al_expm1(real z) {
-#ifdef AL_FAST_ARC
-    const real series_below = AL_R(0.1);
-#else
-    const real series_below = AL_R(0.5);
-#endif
-    if (abs(z) < series_below) return al_expm1_of(z, AL_R(1.0));
+    if (abs(z) < AL_EXPM1_SERIES_BELOW) return al_expm1_of(z, AL_R(1.0));
     return al_exp(z) - AL_R(1.0);
 }
 

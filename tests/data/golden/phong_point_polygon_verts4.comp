@@ -8,8 +8,8 @@
 // The shading library of CONTRACT.md 5: include it in any stage. Names outside
 // the contract's are prefixed al_<light>_<dist>_ (AL_..., Al...) so that they
 // cannot collide with a renderer's or another arealight library's.
-#ifndef AREALIGHT_LIBRARY_6BB2531D614D90E9
-#define AREALIGHT_LIBRARY_6BB2531D614D90E9 1
+#ifndef AREALIGHT_LIBRARY_3D659556841D90D2
+#define AREALIGHT_LIBRARY_3D659556841D90D2 1
 #extension GL_GOOGLE_cpp_style_line_directive : enable
 #extension GL_EXT_control_flow_attributes : enable
 #line 1 "templates/library/types.glsl"
@@ -250,6 +250,15 @@ al_polygon_phong_real al_polygon_phong_exp(al_polygon_phong_real al_polygon_phon
 #endif
 }
 
+// Below |z| = AL_EXPM1_SERIES_BELOW, exp(z) - 1 is its Taylor series (al_expm1_of);
+// beyond, exp(z) - 1 itself, which cannot cancel there. One threshold for both functions,
+// so that al_expm1 takes its exp exactly where al_expm1_of would use it.
+#ifdef AL_POLYGON_PHONG_FAST_ARC
+#define AL_POLYGON_PHONG_EXPM1_SERIES_BELOW 0.1f
+#else
+#define AL_POLYGON_PHONG_EXPM1_SERIES_BELOW 0.5f
+#endif
+
 // exp(z) - 1 for z <= 0 (used for 1 - x^k), given ez = exp(z) where a caller has it.
 // Relative error a few ulp: Taylor for |z| < 1/2 (fp64 to z^16, < 1e-18; fp32 to z^8,
 // < 1e-9), ez - 1 beyond, where it cannot cancel.
@@ -257,12 +266,12 @@ al_polygon_phong_real al_polygon_phong_expm1_of(al_polygon_phong_real al_polygon
 #ifdef AL_POLYGON_PHONG_FAST_ARC
     // AL_FAST_ARC: Taylor to z^5 below |z| = 0.1 (truncation < 1.4e-8 relative), exp(z) - 1
     // beyond (rounding < 6.3e-7 relative): four FMAs fewer on each of a peak fit's paths.
-    if (abs(al_polygon_phong_z) < 0.1f)
+    if (abs(al_polygon_phong_z) < AL_POLYGON_PHONG_EXPM1_SERIES_BELOW)
         return al_polygon_phong_z * (1.0f + al_polygon_phong_z * (0.5f + al_polygon_phong_z * (1.0f / 6.0f +
                     al_polygon_phong_z * (1.0f / 24.0f + al_polygon_phong_z * (1.0f / 120.0f)))));
     return al_polygon_phong_ez - 1.0f;
 #endif
-    if (abs(al_polygon_phong_z) < 0.5f) {
+    if (abs(al_polygon_phong_z) < AL_POLYGON_PHONG_EXPM1_SERIES_BELOW) {
 #if AL_POLYGON_PHONG_PRECISION_FP64
         al_polygon_phong_real p = 1.0f / 20922789888000.0f;
         p = p * al_polygon_phong_z + 1.0f / 1307674368000.0f;
@@ -290,12 +299,7 @@ al_polygon_phong_real al_polygon_phong_expm1_of(al_polygon_phong_real al_polygon
 
 // exp(z) - 1 for z <= 0 (al_expm1_of), the exp only where the series does not serve.
 al_polygon_phong_real al_polygon_phong_expm1(al_polygon_phong_real al_polygon_phong_z) {
-#ifdef AL_POLYGON_PHONG_FAST_ARC
-    const al_polygon_phong_real al_polygon_phong_series_below = 0.1f;
-#else
-    const al_polygon_phong_real al_polygon_phong_series_below = 0.5f;
-#endif
-    if (abs(al_polygon_phong_z) < al_polygon_phong_series_below) return al_polygon_phong_expm1_of(al_polygon_phong_z, 1.0f);
+    if (abs(al_polygon_phong_z) < AL_POLYGON_PHONG_EXPM1_SERIES_BELOW) return al_polygon_phong_expm1_of(al_polygon_phong_z, 1.0f);
     return al_polygon_phong_exp(al_polygon_phong_z) - 1.0f;
 }
 
@@ -351,7 +355,7 @@ void al_polygon_phong_tangent_frame(al_polygon_phong_rvec3 al_polygon_phong_z, A
 // precision: a value beyond the fp32 range is thus caught here too.
 float al_polygon_phong_clean(float al_polygon_phong_x) { return (al_polygon_phong_x >= 0.0f && al_polygon_phong_x <= 3.0e38f) ? al_polygon_phong_x : 0.0f; }
 vec4 al_polygon_phong_clean(vec4 al_polygon_phong_x) { return vec4(al_polygon_phong_clean(al_polygon_phong_x.x), al_polygon_phong_clean(al_polygon_phong_x.y), al_polygon_phong_clean(al_polygon_phong_x.z), al_polygon_phong_clean(al_polygon_phong_x.w)); }
-#line 355 "arealight-generated"
+#line 359 "arealight-generated"
 #line 1 "templates/dist/phong.glsl"
 // Energy-conserving Phong, CONTRACT.md 2: f = (N+2)/(2 pi) (r.w)_+^N.
 
@@ -368,7 +372,7 @@ al_polygon_phong_real al_polygon_phong_phong_power(al_polygon_phong_rvec3 al_pol
 al_polygon_phong_real al_polygon_phong_phong_brdf(al_polygon_phong_rvec3 al_polygon_phong_r, al_polygon_phong_rvec3 al_polygon_phong_w, al_polygon_phong_real al_polygon_phong_N) {
     return (al_polygon_phong_N + 2.0f) / AL_POLYGON_PHONG_TWO_PI * al_polygon_phong_phong_power(al_polygon_phong_r, al_polygon_phong_w, al_polygon_phong_N);
 }
-#line 372 "arealight-generated"
+#line 376 "arealight-generated"
 #line 1 "templates/light/point_light.glsl"
 // A point light of solid angle omega in direction w (unit): the point-light baseline
 // every speed ratio divides by (light/polygon_methods.glsl: the polygon's centre;
@@ -386,7 +390,7 @@ vec4 al_polygon_phong_point_light(AlPolygonPhongCase al_polygon_phong_c, al_poly
 #endif
     return vec4(al_polygon_phong_nw / AL_POLYGON_PHONG_PI * al_polygon_phong_solid_angle, al_polygon_phong_spec, 0.0f, 0.0f);
 }
-#line 390 "arealight-generated"
+#line 394 "arealight-generated"
 #line 1 "templates/light/polygon.glsl"
 // Polygon lights (CONTRACT.md 1) as spherical polygons: orientation, sidedness,
 // exact clipping to the hemispheres of n and of the lobe axis, and the exact diffuse
@@ -557,7 +561,7 @@ al_polygon_phong_rvec2 al_polygon_phong_polygon_moments(AlPolygonPhongCase al_po
 #endif
 #endif
 #endif
-#line 561 "arealight-generated"
+#line 565 "arealight-generated"
 #line 1 "templates/light/polygon_methods.glsl"
 // Shading of polygon lights (CONTRACT.md 2) by each method: the point-light
 // baseline, or clipping (light/polygon.glsl) and the method's boundary moments.
@@ -675,7 +679,7 @@ vec4 al_polygon_phong_shade(AlPolygonPhongCase al_polygon_phong_c) {
     return vec4(diffuse, specular, al_polygon_phong_sm.y, 0.0f);
 }
 #endif
-#line 679 "arealight-generated"
+#line 683 "arealight-generated"
 #line 1 "templates/library/polygon.glsl"
 // The library entry for polygon lights (CONTRACT.md 5): the renderer's fp32 values,
 // in any consistent space, turned into the record the methods work on, in the
@@ -727,7 +731,7 @@ AlPolygonPhongCase al_polygon_phong_polygon_record(ArealightSurface al_polygon_p
 vec4 al_polygon_phong_polygon_evaluate(ArealightSurface al_polygon_phong_s, vec3 al_polygon_phong_vertices[8], int al_polygon_phong_count, bool al_polygon_phong_two_sided) {
     return al_polygon_phong_clean(al_polygon_phong_shade(al_polygon_phong_polygon_record(al_polygon_phong_s, al_polygon_phong_vertices, al_polygon_phong_count, al_polygon_phong_two_sided)));
 }
-#line 731 "arealight-generated"
+#line 735 "arealight-generated"
 // arealight_polygon_phong: variant dist=phong,method=point,light=polygon,verts=4.
 // Domain: p, n, v, the light in one space, fp32 (n, v any length); convex planar polygon, counter-clockwise seen from its emitting side, count in [3, AL_MAX_VERTS] (more are cut to the first AL_MAX_VERTS); s.param the exponent N in [1, 1e5]; s.f0 in [0, 1] (ignored).
 // Returns diffuse and specular of CONTRACT.md 2 for unit radiance: finite, >= 0.
@@ -740,7 +744,7 @@ ArealightShading arealight_polygon_phong(ArealightSurface al_polygon_phong_s, ve
     return al_polygon_phong_result;
 }
 #define AREALIGHT_HAS_POLYGON_PHONG 1
-#endif  // AREALIGHT_LIBRARY_6BB2531D614D90E9
+#endif  // AREALIGHT_LIBRARY_3D659556841D90D2
 #define AL_KERNEL_SHADE arealight_polygon_phong
 #define AL_KERNEL_EVALUATE al_polygon_phong_polygon_evaluate
 #define AL_KERNEL_ARGS vertices, count, two_sided
@@ -797,4 +801,4 @@ void main() {
 #endif
     al_results[i] = result;
 }
-#line 801 "arealight-generated"
+#line 805 "arealight-generated"
