@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Seeded hard light cases (arealight-cases/1) that stress the exact and peak methods.
 
-Usage: gen_curved_cases.py COUNT SEED OUT.json [--kind hard|near|aimed|horizon-peak|extreme|degenerate]
-                           [--lights L,...]
+Usage: gen_curved_cases.py COUNT SEED OUT.json
+           [--kind hard|lobe-edge|near|aimed|horizon-peak|extreme|degenerate] [--lights L,...]
 
 --kind hard (default): the lights of --lights (default disk,sphere,ellipsoid; also
 polygon: convex 3- to 8-gons facing p, jittered vertices) in turn, for phong, blinn,
@@ -13,6 +13,10 @@ beckmann and ggx (in turn), each in one of
   grazing  n.v in [1e-3, 0.05]
 (rim and horizon twice as often); sizes 0.03 to 1, axis ratios up to 10, a
 third of the disks two-sided; N log-uniform in [1, 1e5], alpha in [1e-3, 1].
+--kind lobe-edge: the lights of --lights as in hard, the mirror direction aimed at a
+point of the silhouette and moved off it along the silhouette's outward normal by -3 to 3
+lobe widths (sqrt(2 / (N + 2)) for phong and blinn, 2 alpha otherwise): the lobe just
+inside or just outside the light's edge.
 --kind near: p at a distance eps in {1e-2, 1e-3, 1e-4, 1e-5} from a light's
 boundary: beside the rim of an elliptic disk (semi-axes 1, 0.4; above its plane
 or in it), near the disk's plane outside its rim, outside a unit sphere and an
@@ -110,9 +114,9 @@ class Gen:
         return {"distribution": dist, "alpha": 10 ** self.rng.uniform(-3, 0)}
 
 
-def hard_case(g, index, dist, ltype):
+def hard_case(g, index, dist, ltype, scen=None):
     rng = g.rng
-    scen = rng.choice(["horizon", "large", "rim", "grazing", "rim", "horizon"])
+    scen = scen or rng.choice(["horizon", "large", "rim", "grazing", "rim", "horizon"])
     p = [rng.uniform(-3, 3) for _ in range(3)]
     n = g.rand_unit()
     size = 10 ** rng.uniform(-1.5, 0)
@@ -177,6 +181,21 @@ def hard_case(g, index, dist, ltype):
         if dot(tdir, n) < 0.02:
             return None
         v = add(scale(n, 2 * dot(n, tdir)), tdir, -1)
+    elif scen == "lobe-edge":
+        # The lobe's axis u lobe widths outside (u > 0) or inside the silhouette at one of
+        # its points, along the silhouette's outward normal as p sees it.
+        q = rim(rng.uniform(0, 2 * math.pi))
+        tdir = unit(add(q, p, -1))
+        out = add(q, c, -1)
+        out = unit(add(out, tdir, -dot(out, tdir)))
+        mat = g.material(dist)
+        width = (math.sqrt(2 / (mat["exponent"] + 2)) if "exponent" in mat else 2 * mat["alpha"])
+        tdir = unit(add(tdir, out, math.tan(min(rng.uniform(-3, 3) * width, 1.2))))
+        if dot(tdir, n) < 0.02:
+            return None
+        v = add(scale(n, 2 * dot(n, tdir)), tdir, -1)
+        return {"id": "lobe-edge-%s-%s-%03d" % (ltype, dist, index), "p": p, "n": n, "v": v,
+                "light": light, "material": mat}
     elif scen == "grazing":
         e1, _ = g.frame(n)
         cv = 10 ** rng.uniform(-3, -1.3)
@@ -428,7 +447,8 @@ def main():
     ap.add_argument("count", type=int)
     ap.add_argument("seed", type=int)
     ap.add_argument("out")
-    ap.add_argument("--kind", choices=["hard", "near", "aimed", "horizon-peak", "extreme", "degenerate"],
+    ap.add_argument("--kind", choices=["hard", "lobe-edge", "near", "aimed", "horizon-peak", "extreme",
+                                       "degenerate"],
                     default="hard")
     ap.add_argument("--lights", default=None,
                     help="comma-separated light types of --kind hard (polygon, disk, sphere, ellipsoid; "
@@ -441,6 +461,9 @@ def main():
         ap.error("unknown light type %s in --lights" % ", ".join(bad))
     if a.kind == "hard":
         cases = cases_in_turn(hard_case, a.count, a.seed, lights)
+    elif a.kind == "lobe-edge":
+        cases = cases_in_turn(lambda g, i, d, t: hard_case(g, i, d, t, "lobe-edge"), a.count, a.seed,
+                              lights)
     elif a.kind == "aimed":
         cases = aimed_cases(a.count, a.seed)
     elif a.kind == "horizon-peak":

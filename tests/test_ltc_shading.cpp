@@ -169,14 +169,20 @@ TEST_CASE("ltc: Fresnel in the magnitude: its error against the plain output's",
     // their Fresnel channel, the plain split sum (GGX's correction doubles it for them):
     // with random f0 relL2 0.0306 -> 0.0262 and 0.0476 -> 0.0317, at f0 0.04 0.0825 ->
     // 0.0875 and 0.0820 -> 0.0789. So Fresnel is now most of their error: relL2 / plain
-    // 1.97 and 2.08, to the yardstick 2.06 and 1.65, at f0 0.04 5.3 and 2.4.
+    // 1.97 and 2.08, to the yardstick 2.06 and 1.65, at f0 0.04 5.3 and 2.4. The albedo
+    // ceiling (al_ltc_specular) then took their plain error 0.0133 -> 0.0098 and 0.0152 ->
+    // 0.0132 and their Fresnel channel's less (random f0 0.0262 -> 0.0255, 0.0317 ->
+    // 0.0309; f0 0.04 0.0875 -> 0.0863, 0.0789 -> 0.0774): relL2 / plain 2.60 and 2.34, to
+    // the yardstick 2.26 and 1.76, at f0 0.04 11.0 and 2.67 (GGX: 1.20, 0.99, 1.45). The
+    // bars hold those ratios with ~5-10% to spare; the channel itself is what is weak
+    // (docs/ltc.md).
     struct FresnelBar {
         Distribution d;
         double random_f0, dielectric;  // bars on the ratio to the yardstick
         double plain;                  // bar on relL2 with random f0 over relL2 without
     };
-    const FresnelBar bars[] = {{Distribution::Blinn, 2.3, 5.8, 2.2},
-                               {Distribution::Beckmann, 1.8, 2.7, 2.3},
+    const FresnelBar bars[] = {{Distribution::Blinn, 2.6, 12.5, 3.1},
+                               {Distribution::Beckmann, 1.95, 2.95, 2.6},
                                {Distribution::Ggx, 1.2, 1.5, 1.2}};
     for (const FresnelBar& bar : bars) {
         const Distribution d = bar.d;
@@ -250,6 +256,63 @@ TEST_CASE("ltc: a light filling the hemisphere is exact, with and without Fresne
             INFO(ltc_name(d, "") << " " << out.results[i].id << ": specular "
                                  << *out.results[i].specular << ", reference " << ref);
             CHECK(rel_err(*out.results[i].specular, ref) <= kHemisphereTol);
+        }
+    }
+}
+
+TEST_CASE("ltc: no light gives more than a light filling the hemisphere", "[shading][ltc]") {
+    // Monotonicity: a light inside the hemisphere holds part of the lobe, so its specular is
+    // at most that of the 2000 x 2000 quad at height 1 (the hemisphere, to 0.03 degrees).
+    // The two-lobe kernel is negative in its far tail and the LTC's own clip counts lobe
+    // mass below n's horizon, so before the albedo ceiling (al_ltc_specular) quads about
+    // the mirror direction exceeded it (public glossy beckmann poly8 065: 1.0166 against
+    // 1.0000), and glossy microfacet lobes (albedo ~1) went above 1. kCeiling: the ceiling's allowance for the table's albedo (AL_LTC_ALBEDO_TOL,
+    // templates/method/ltc.glsl) and what the hemisphere quad misses near the horizon. Glossy
+    // lobes, views n.v 0.9 to 0.2, square lights about r of half-angle 10 to 80 degrees (the
+    // larger ones crossing the horizon), every distribution.
+    constexpr double kCeiling = 0.011;
+    const std::vector<glm::dvec3> hemisphere = {{-1000, 1000, 1}, {1000, 1000, 1},
+                                                {1000, -1000, 1}, {-1000, -1000, 1}};
+    for (Distribution d : {Distribution::Phong, Distribution::Blinn, Distribution::Beckmann,
+                           Distribution::Ggx}) {
+        CaseSet set;
+        for (double rough : {0.01, 0.03, 0.1}) {
+            for (double nv : {0.9, 0.5, 0.2}) {
+                const double param =
+                    d == Distribution::Phong || d == Distribution::Blinn ? 2 / (rough * rough) - 2 : rough;
+                const glm::dvec3 n(0, 0, 1), v(std::sqrt(1 - nv * nv), 0, nv);
+                const glm::dvec3 r(-v.x, 0, nv);
+                const glm::dvec3 t1(0, 1, 0), t2 = glm::cross(r, t1);
+                set.cases.push_back(polygon_case("hemi-" + std::to_string(set.cases.size()),
+                                                 hemisphere, n, v, d, param));
+                for (double deg : {10.0, 30.0, 50.0, 65.0, 80.0}) {
+                    const double h = std::tan(deg * M_PI / 180);
+                    // Counter-clockwise seen from p: (t2, t1) right-handed about -r... walk
+                    // so that (v1 - v0) x (v2 - v0) points back towards p.
+                    std::vector<glm::dvec3> quad = {r + h * (t1 + t2), r + h * (t2 - t1),
+                                                    r - h * (t1 + t2), r + h * (t1 - t2)};
+                    if (glm::dot(glm::cross(quad[1] - quad[0], quad[2] - quad[0]), r) > 0)
+                        std::swap(quad[1], quad[3]);
+                    set.cases.push_back(polygon_case("quad-" + std::to_string(set.cases.size()),
+                                                     quad, n, v, d, param));
+                }
+            }
+        }
+        const ResultSet out = run(Backend::Cpu, ltc_name(d, ""), set);
+        REQUIRE(out.results.size() == set.cases.size());
+        double whole = 0;
+        for (const CaseResult& res : out.results) {
+            if (res.id.rfind("hemi-", 0) == 0) {
+                whole = *res.specular;
+                continue;
+            }
+            INFO(ltc_name(d, "") << " " << res.id << ": specular " << *res.specular
+                                 << ", the hemisphere's " << whole);
+            CHECK(*res.specular > 0);  // the quads face p and hold r
+            CHECK(*res.specular <= whole * (1 + kCeiling));
+            // F = 1: phong, beckmann and ggx reflect at most all (blinn's D with Beckmann's
+            // Lambda does not: 1.044 at n.v = 0.08, the test above).
+            if (d != Distribution::Blinn) CHECK(*res.specular <= 1 + 1e-6);
         }
     }
 }

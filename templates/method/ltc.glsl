@@ -24,10 +24,11 @@
 // table=fit (GGX) evaluates the coefficients in closed form (templates/method/ltc_ggx_fit.glsl,
 // al_ltc_fit_lookup) and the proxy by Snyder's formula: no texture, no sampler.
 // GPU cost (navi21, `arealight gpu-cost`, the validation kernel): GGX polygon default
-// 986 (1.98x its point light's 498; 2705 instructions, 96 VGPRs); table=fit 1910
-// (3.84x; 3576 instructions, 96 VGPRs). The two-lobe tables' second edge sum: blinn /
-// beckmann / phong polygon 1079 / 1075 / 1077 (1.88x / 1.94x / 2.36x; one lobe 949 / 945
-// / 947); their disk, sphere and ellipsoid +29-31% with horizon=clip, +19-21% with proxy.
+// 999 (2.01x its point light's 498; 2719 instructions, 96 VGPRs); table=fit 1923
+// (3.86x; 3588 instructions, 96 VGPRs). The two-lobe tables' second edge sum: blinn /
+// beckmann / phong polygon 1099 / 1095 / 1097 (1.92x / 1.98x / 2.40x; one lobe, before the
+// albedo ceiling, 949 / 945 / 947); their disk, sphere and ellipsoid +29-31% with
+// horizon=clip, +19-21% with proxy.
 
 // Two lobes (include/arealight/ltc_table.hpp, fit/ltc_fit.cpp): a transformed clamped
 // cosine has a power-law tail, as GGX's lobe has, while the Phong, Blinn and Beckmann
@@ -290,6 +291,21 @@ real al_ltc_sphere_clipped(real co, real ss2) {
 
 // The case's LTC: n, its frame (z = n, x toward v; ltc_table.hpp), the texels of its
 // roughness and view, and Minv times the frame as rows: t = Minv (d.tx, d.ty, d.n).
+// The albedo ceiling's reach (al_ltc_specular): the table's albedo (f0 A + B) I_H holds the
+// true one to AL_LTC_ALBEDO_TOL from n.v = AL_LTC_ALBEDO_VIEWS up (a light filling the
+// hemisphere, tests/test_ltc_shading.cpp: worst 0.9%); at grazing views it is not a bound
+// (n.v 1e-3, beyond the last fitted row: 0.61 against 0.91). AL_LTC_ALBEDO_MAX bounds every
+// view: 1 for Phong and for Beckmann and GGX with their own Smith G2 (F <= 1, single
+// scattering); blinn's D with Beckmann's Lambda (CONTRACT.md 2) is not so bounded (1.044 at
+// n.v = 0.08, N = 6), so it has none.
+const real AL_LTC_ALBEDO_VIEWS = AL_R(0.08);
+const real AL_LTC_ALBEDO_TOL = AL_R(0.01);
+#ifdef AL_DIST_BLINN
+const real AL_LTC_ALBEDO_MAX = AL_R(1e30);
+#else
+const real AL_LTC_ALBEDO_MAX = AL_R(1.0);
+#endif
+
 struct AlLtc {
     rvec3 n;
     real nv;
@@ -298,7 +314,25 @@ struct AlLtc {
     rvec3 row0;
     rvec3 row1;
     rvec3 row2;
+    real albedo;  // the ceiling on specular (al_ltc_specular)
 };
+
+// The LTC's integral over n's hemisphere, I_H, from the table's (a, d) and K (ltc_table.hpp:
+// the magnitudes A and B are the hemisphere's parts divided by it). The hemisphere's image
+// is the lune z > 0, (-d, 0, a).w > 0 in the LTC's space (the GGX Fresnel term's reading,
+// al_ltc_magnitude), whose cosine form factor is (1 + cos beta) / 2, beta the lune planes'
+// angle (Lambert's formula on its two half circles); the second lobe's map diag(1/s, 1/s, 1)
+// takes the plane's normal to (-d s, 0, a). Taken at the lookup, so that one value, not the
+// matrix, stays live through the edge loop (blinn's and beckmann's polygons kept 96 VGPRs).
+real al_ltc_upper_integral(rvec4 m, rvec4 amp) {
+    real a = m.x, d = m.w;
+    real i_h = AL_R(0.5) + AL_R(0.5) * a * inversesqrt(a * a + d * d);
+#ifdef AL_LTC_TWO_LOBES
+    real ds = d / AL_LTC_SECOND.x;  // d s
+    i_h += amp.z * (AL_R(0.5) + AL_R(0.5) * a * inversesqrt(a * a + ds * ds));
+#endif
+    return i_h;
+}
 
 AlLtc al_ltc_lookup(AlCase c) {
     AlLtc L;
@@ -329,6 +363,14 @@ AlLtc al_ltc_lookup(AlCase c) {
     L.row0 = L.m.x * tx + L.m.y * L.n;
     L.row1 = L.m.z * ty;
     L.row2 = L.m.w * tx + L.n;
+#ifdef AL_DIST_PHONG
+    real albedo = L.amp.x * al_ltc_upper_integral(L.m, L.amp);
+#else
+    real albedo = (real(c.params.w) * L.amp.x + L.amp.y) * al_ltc_upper_integral(L.m, L.amp);
+#endif
+    L.albedo = L.nv >= AL_LTC_ALBEDO_VIEWS
+                   ? min(albedo * (AL_R(1.0) + AL_LTC_ALBEDO_TOL), AL_LTC_ALBEDO_MAX)
+                   : AL_LTC_ALBEDO_MAX;
     return L;
 }
 
@@ -415,6 +457,22 @@ real al_ltc_magnitude(AlLtc L, hvec3 vector_ff, real f0) {
 #endif
 }
 
+// The specular of a light region from its lobe integral `form` (one or two lobes, as the
+// shader sums them): the table's magnitude times form, kept within [0, L.albedo], a ceiling
+// above the true value (al_ltc_lookup: the table's albedo plus its error where that is
+// known, else 1), so the clamp never moves an estimate away from the truth. The LTC
+// exceeds the albedo where its kernel is signed (two lobes: D_o + K D_s, K < 0, is
+// negative in its far tail, so a light that holds the core but not that tail overshoots)
+// and where the light reaches below n's horizon (the clip is the LTC's own z >= 0, which
+// counts lobe mass beyond the true horizon). Domain: any lookup L and form; error: never
+// larger than the unclamped product's (public glossy beckmann poly8 065: 1.0166 ->
+// 1.0000, reference 1.0000; docs/ltc.md, "Albedo ceiling"). Cost: two inverse square
+// roots a shading point, formed at the lookup (ggx polygon 986 -> 999 cycles a wave,
+// beckmann 1 075 -> 1 095, VGPRs unchanged).
+real al_ltc_specular(AlLtc L, real form, hvec3 vector_ff, real f0) {
+    return clamp(form * al_ltc_magnitude(L, vector_ff, f0), AL_R(0.0), max(L.albedo, AL_R(0.0)));
+}
+
 #ifndef AL_LIGHT_CURVED
 // Diffuse and specular (CONTRACT.md 2; no ndf or moment).
 vec4 al_shade(AlCase c) {
@@ -479,7 +537,7 @@ vec4 al_shade(AlCase c) {
         // The kernel is negative in its far tail (K < 0): a light there gets 0.
         form += L.amp.z * al_ltc_sum_form(s2);
 #endif
-        specular = max(form, AL_R(0.0)) * al_ltc_magnitude(L, s1.ff, real(c.params.w));
+        specular = al_ltc_specular(L, form, s1.ff, real(c.params.w));
     }
     return vec4(diffuse, specular, AL_R(0.0), AL_R(0.0));
 }

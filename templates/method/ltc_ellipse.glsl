@@ -45,7 +45,7 @@ vec4 al_shade(AlCase c) {
         AlEllipseCone k2 = al_ellipse_cone(Ct * AL_LTC_SECOND, Ut * AL_LTC_SECOND, Vt * AL_LTC_SECOND);
         form += L.amp.z * al_ltc_ellipse_form(k2, hvec3(AL_TWO_PI * k2.ff * k2.axis));
 #endif
-        specular = max(form, AL_R(0.0)) * al_ltc_magnitude(L, vector_ff, real(c.params.w));
+        specular = al_ltc_specular(L, form, vector_ff, real(c.params.w));
     }
     return vec4(diffuse, specular, AL_R(0.0), AL_R(0.0));
 }
