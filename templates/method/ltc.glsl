@@ -289,8 +289,6 @@ real al_ltc_sphere_clipped(real co, real ss2) {
 }
 #endif
 
-// The case's LTC: n, its frame (z = n, x toward v; ltc_table.hpp), the texels of its
-// roughness and view, and Minv times the frame as rows: t = Minv (d.tx, d.ty, d.n).
 // The albedo ceiling's reach (al_ltc_specular): the table's albedo (f0 A + B) I_H holds the
 // true one to AL_LTC_ALBEDO_TOL from n.v = AL_LTC_ALBEDO_VIEWS up (a light filling the
 // hemisphere, tests/test_ltc_shading.cpp: worst 0.9%); at grazing views it is not a bound
@@ -306,6 +304,8 @@ const real AL_LTC_ALBEDO_MAX = AL_R(1e30);
 const real AL_LTC_ALBEDO_MAX = AL_R(1.0);
 #endif
 
+// The case's LTC: n, its frame (z = n, x toward v; ltc_table.hpp), the texels of its
+// roughness and view, and Minv times the frame as rows: t = Minv (d.tx, d.ty, d.n).
 struct AlLtc {
     rvec3 n;
     real nv;
