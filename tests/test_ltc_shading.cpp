@@ -163,27 +163,26 @@ TEST_CASE("ltc: Fresnel in the magnitude: its error against the plain output's",
     // grazing ones, where the LTC's own error is larger), so the test also checks the
     // channel against a second yardstick: the plain output scaled by the oracle's exact
     // per-case ratio ref_F / ref_1 (a perfect Fresnel channel on the same fit).
-    // Measured, random f0: relL2 / plain 1.17 (ggx); to the yardstick 0.97; at f0 0.04,
-    // to the yardstick 1.38. The two-lobe tables of blinn and beckmann (method/ltc.glsl)
-    // halved their plain error (0.0266 -> 0.0133, 0.0405 -> 0.0152) and left the error of
-    // their Fresnel channel, the plain split sum (GGX's correction doubles it for them):
-    // with random f0 relL2 0.0306 -> 0.0262 and 0.0476 -> 0.0317, at f0 0.04 0.0825 ->
-    // 0.0875 and 0.0820 -> 0.0789. So Fresnel is now most of their error: relL2 / plain
-    // 1.97 and 2.08, to the yardstick 2.06 and 1.65, at f0 0.04 5.3 and 2.4. The albedo
-    // ceiling (al_ltc_specular) then took their plain error 0.0133 -> 0.0098 and 0.0152 ->
-    // 0.0132 and their Fresnel channel's less (random f0 0.0262 -> 0.0255, 0.0317 ->
-    // 0.0309; f0 0.04 0.0875 -> 0.0863, 0.0789 -> 0.0774): relL2 / plain 2.60 and 2.34, to
-    // the yardstick 2.26 and 1.76, at f0 0.04 11.0 and 2.67 (GGX: 1.20, 0.99, 1.45). The
-    // bars hold those ratios with ~5-10% to spare; the channel itself is what is weak
+    // GGX's channel (the split sum with its lobe-position correction) is held to ratios:
+    // measured, random f0: relL2 / plain 1.01, to the yardstick 0.93; at f0 0.04, to the
+    // yardstick 1.16. The two-lobe tables of blinn and beckmann (method/ltc.glsl) keep the
+    // plain split sum (GGX's correction doubles their error), which is now most of their
+    // error: their plain error fell with each change to the lobe (two lobes, the albedo
+    // ceiling, the clip to n's horizon: blinn 0.0266 -> 0.0097, beckmann 0.0405 -> 0.0086)
+    // while the Fresnel channel's stayed (random f0 blinn 0.0306 -> 0.0261, beckmann
+    // 0.0476 -> 0.0291; f0 0.04 0.0825 -> 0.0870, 0.0820 -> 0.0756), so a ratio to the
+    // plain error only recorded the plain error's progress. Their bars are absolute relL2,
+    // the measured values with ~10% to spare: the channel itself is what is weak
     // (docs/ltc.md).
     struct FresnelBar {
         Distribution d;
-        double random_f0, dielectric;  // bars on the ratio to the yardstick
+        bool absolute;                 // bars on relL2 itself, not on ratios
+        double random_f0, dielectric;  // bars on the ratio to the yardstick (or relL2)
         double plain;                  // bar on relL2 with random f0 over relL2 without
     };
-    const FresnelBar bars[] = {{Distribution::Blinn, 2.6, 12.5, 3.1},
-                               {Distribution::Beckmann, 1.95, 2.95, 2.6},
-                               {Distribution::Ggx, 1.2, 1.5, 1.2}};
+    const FresnelBar bars[] = {{Distribution::Blinn, true, 0.029, 0.096, 0},
+                               {Distribution::Beckmann, true, 0.032, 0.083, 0},
+                               {Distribution::Ggx, false, 1.2, 1.5, 1.2}};
     for (const FresnelBar& bar : bars) {
         const Distribution d = bar.d;
         const CaseSet plain_set = [&] {
@@ -220,8 +219,13 @@ TEST_CASE("ltc: Fresnel in the magnitude: its error against the plain output's",
             INFO(name << (k == 0 ? ", f0 0.04" : ", random f0") << ": specular relL2 " << e
                       << ", plain output scaled by the exact F ratio " << e_scaled
                       << ", plain (F = 1) " << e_plain);
-            CHECK(e <= (k == 0 ? bar.dielectric : bar.random_f0) * e_scaled);
-            if (k == 1) CHECK(e <= bar.plain * e_plain);
+            const double limit = k == 0 ? bar.dielectric : bar.random_f0;
+            if (bar.absolute) {
+                CHECK(e <= limit);
+            } else {
+                CHECK(e <= limit * e_scaled);
+                if (k == 1) CHECK(e <= bar.plain * e_plain);
+            }
         }
     }
 }
@@ -313,6 +317,79 @@ TEST_CASE("ltc: no light gives more than a light filling the hemisphere", "[shad
             // F = 1: phong, beckmann and ggx reflect at most all (blinn's D with Beckmann's
             // Lambda does not: 1.044 at n.v = 0.08, the test above).
             if (d != Distribution::Blinn) CHECK(*res.specular <= 1 + 1e-6);
+        }
+    }
+}
+
+TEST_CASE("ltc: a light is shaded by its part above n's horizon", "[shading][vulkan][ltc]") {
+    // (f (n.w))+ is 0 below n's horizon, so a light crossing it must give what its part above
+    // gives, and a light below it nothing; the LTC's own clip (z >= 0 in its space) is the
+    // plane (-d, 0, a).w = 0, not n's horizon, and before al_ltc_horizon_arc
+    // (templates/method/ltc.glsl) counted the lobe between the two: every distribution failed
+    // both checks here (docs/ltc.md, "True horizon"). Seeded quads 2 away, about the lobe's
+    // azimuth, their centre within 20 degrees of the horizon, views n.v 0.1 to 0.9; the part
+    // above is the quad clipped to z >= 0 in double (a 3- to 5-gon in the same plane).
+    // kSameRegion (relative, floor 1e-2): the shader forms the crossing from fp32 directions
+    // (al_crossing), the test's vertex is the double one; measured worst 1.5e-5 relative
+    // above 1e-2, 1.1e-7 absolute below (blinn at 1.1e-4, its two lobes cancelling).
+    constexpr double kSameRegion = 1e-4;
+    std::mt19937_64 rng(9100);
+    std::uniform_real_distribution<double> U(0, 1);
+    for (Distribution d : kAll) {
+        CaseSet crossing, part, below;
+        while (crossing.cases.size() < 24 || below.cases.size() < 8) {
+            const double nv = 0.1 + 0.8 * U(rng);
+            const glm::dvec3 n(0, 0, 1), v(std::sqrt(1 - nv * nv), 0, nv);
+            const double phi = M_PI + 1.6 * (U(rng) - 0.5), elev = 0.7 * (U(rng) - 0.5);
+            const glm::dvec3 dir(std::cos(elev) * std::cos(phi), std::cos(elev) * std::sin(phi),
+                                 std::sin(elev));
+            const glm::dvec3 t1 = glm::normalize(glm::cross(dir, n)), t2 = glm::cross(t1, dir);
+            const double h1 = 0.2 + 1.2 * U(rng), h2 = 0.05 + 1.2 * U(rng);
+            const glm::dvec3 C = 2.0 * dir;
+            std::vector<glm::dvec3> quad = {C - h1 * t1 - h2 * t2, C + h1 * t1 - h2 * t2,
+                                            C + h1 * t1 + h2 * t2, C - h1 * t1 + h2 * t2};
+            if (glm::dot(glm::cross(quad[1] - quad[0], quad[2] - quad[0]), -quad[0]) < 0)
+                std::swap(quad[1], quad[3]);
+            std::vector<glm::dvec3> above;
+            for (std::size_t i = 0; i < quad.size(); ++i) {
+                const glm::dvec3 a = quad[i], b = quad[(i + 1) % quad.size()];
+                if (a.z >= 0) above.push_back(a);
+                if ((a.z >= 0) != (b.z >= 0)) above.push_back(a + (b - a) * (a.z / (a.z - b.z)));
+            }
+            const double param = d == Distribution::Phong || d == Distribution::Blinn
+                                     ? std::exp(std::log(2e3) * U(rng))
+                                     : 0.03 + 0.5 * U(rng);
+            const std::string id = "q" + std::to_string(crossing.cases.size() + below.cases.size());
+            if (above.empty() && below.cases.size() < 8) {
+                below.cases.push_back(polygon_case(id, quad, n, v, d, param));
+            } else if (above.size() >= 3 &&
+                       std::min({quad[0].z, quad[1].z, quad[2].z, quad[3].z}) < -0.05 &&
+                       crossing.cases.size() < 24) {
+                crossing.cases.push_back(polygon_case(id, quad, n, v, d, param));
+                part.cases.push_back(polygon_case(id, above, n, v, d, param));
+            }
+        }
+        for (const std::string keys : {"", "table=fit"}) {
+            if (!keys.empty() && d != Distribution::Ggx) continue;
+            const std::string name = ltc_name(d, keys);
+            for (Backend b : {Backend::Cpu, Backend::Vulkan}) {
+                const ResultSet whole = run(b, name, crossing), upper = run(b, name, part),
+                                none = run(b, name, below);
+                REQUIRE(whole.results.size() == crossing.cases.size());
+                REQUIRE(upper.results.size() == part.cases.size());
+                REQUIRE(none.results.size() == below.cases.size());
+                for (std::size_t i = 0; i < whole.results.size(); ++i) {
+                    const double x = *whole.results[i].specular, y = *upper.results[i].specular;
+                    INFO(name << " on " << to_string(b) << ", " << whole.results[i].id
+                              << ": specular " << x << ", its part above the horizon " << y);
+                    CHECK(std::abs(x - y) <= kSameRegion * std::max(std::abs(y), 1e-2));
+                }
+                for (const CaseResult& r : none.results) {
+                    INFO(name << " on " << to_string(b) << ", " << r.id
+                              << " (below the horizon): specular " << *r.specular);
+                    CHECK(*r.specular == 0);
+                }
+            }
         }
     }
 }

@@ -157,10 +157,19 @@ real al_ellipse_arc_h(real x1, real x2, real dx, real c, real kk) {
     return AL_R(0.5) * al_log(((c + x2 * r) * (c - x1 * r)) / ((c - x2 * r) * (c + x1 * r))) / r;
 }
 
-// The form factor of the cone about the unit direction n, clipped by n's horizon
-// (CONTRACT.md 2's diffuse for unit radiance when n is the surface normal), >= 0.
-real al_ellipse_clipped_ff(AlEllipseCone k, rvec3 n) {
-    if (!(k.ff > AL_R(0.0))) return AL_R(0.0);
+// The cone's boundary in its principal frame: the directions
+// w(phi) ~ ca cb axis + sa cb cos(phi) v1 + ca sb sin(phi) v2 (unit at that scale), tan
+// of the half-angles t1 = sa / ca <= t2 = sb / cb.
+struct AlConeFrame {
+    rvec3 v1;
+    rvec3 v2;
+    real sa;
+    real ca;
+    real sb;
+    real cb;
+};
+
+AlConeFrame al_cone_frame(AlEllipseCone k) {
     real mu = k.mu;
     // The cone's other two axes: Q on the plane normal to its axis, in a basis (p, q)
     // with q also normal to N, where Q's qq and pq entries are sums of squares and the
@@ -185,37 +194,169 @@ real al_ellipse_clipped_ff(AlEllipseCone k, rvec3 n) {
     real el = round_cone ? AL_R(1.0) : length(rvec2(ex, ey));
     ex = round_cone ? AL_R(1.0) : ex / el;
     ey = round_cone ? AL_R(0.0) : ey / el;
-    rvec3 v1 = ex * p + ey * q, v2 = cross(k.axis, v1);
-    // Sines and cosines of the half-angles (t1 = sa / ca <= t2 = sb / cb), formed
-    // without t itself, which is unbounded near a hemisphere.
-    real sa = sqrt(mu / (mu + lb)), ca = sqrt(lb / (mu + lb));
-    real sb = sqrt(mu / (mu + ls)), cb = max(sqrt(ls / (mu + ls)), AL_R(1e-30));
-    real n1 = dot(n, v1), n2 = dot(n, v2), n3 = dot(n, k.axis);
-    // n.(boundary direction) ca cb = al0 + al1 cos(phi) + al2 sin(phi): entirely above
-    // (F.n), entirely below (0), or above on phi0 +- delta.
-    real al1 = n1 * sa * cb, al2 = n2 * sb * ca, al0 = n3 * ca * cb;
+    AlConeFrame f;
+    f.v1 = ex * p + ey * q;
+    f.v2 = cross(k.axis, f.v1);
+    // Sines and cosines of the half-angles, formed without t itself, which is unbounded
+    // near a hemisphere.
+    f.sa = sqrt(mu / (mu + lb));
+    f.ca = sqrt(lb / (mu + lb));
+    f.sb = sqrt(mu / (mu + ls));
+    f.cb = max(sqrt(ls / (mu + ls)), AL_R(1e-30));
+    return f;
+}
+
+// Where the half space m.w >= 0 holds the cone's boundary: m.w(phi) ca cb = al0 + al1
+// cos(phi) + al2 sin(phi), all of it (1), none (-1), or phi0 +- delta (0), with
+// arc = (cos phi0, sin phi0, cos delta, sin delta).
+int al_cone_side(AlConeFrame f, rvec3 axis, rvec3 m, AL_INOUT(rvec4) arc) {
+    real al1 = dot(m, f.v1) * f.sa * f.cb, al2 = dot(m, f.v2) * f.sb * f.ca;
+    real al0 = dot(m, axis) * f.ca * f.cb;
     real R = sqrt(al1 * al1 + al2 * al2);
-    if (al0 >= R) return k.ff * n3;
-    if (al0 <= -R) return AL_R(0.0);
-    real c0 = al1 / R, s0 = al2 / R, cd = -al0 / R;
-    real sd = sqrt(max((R - al0) * (R + al0), AL_R(0.0))) / R;
+    arc = rvec4(AL_R(1.0), AL_R(0.0), AL_R(-1.0), AL_R(0.0));
+    if (al0 >= R) return 1;
+    if (al0 <= -R) return -1;
+    arc = rvec4(al1 / R, al2 / R, -al0 / R,
+                sqrt(max((R - al0) * (R + al0), AL_R(0.0))) / R);
+    return 0;
+}
+
+// The boundary direction at phi = (cos, sin).
+rvec3 al_cone_point(AlConeFrame f, rvec3 axis, real c, real s) {
+    return f.ca * f.cb * axis + f.sa * f.cb * c * f.v1 + f.ca * f.sb * s * f.v2;
+}
+
+// 2 pi times the form factor about the unit c of the cone's boundary arc from phi at
+// (cA, sA) to phi at (cB, sB), counter-clockwise, with d_s = sB - sA and d_c = cB - cA formed
+// by the caller; long_arc when it spans more than pi. (Lambert's boundary integral on
+// the elliptic boundary: one angle, the change of atan2(ca sin(phi), cb cos(phi)), which
+// maps arcs of pi to arcs of pi, and al_ellipse_arc_h's two terms.)
+real al_cone_arc(AlConeFrame f, rvec3 axis, rvec3 c, real cA, real sA, real cB, real sB,
+                 real d_s, real d_c, bool long_arc) {
+    real gx1 = f.cb * cA, gy1 = f.ca * sA, gx2 = f.cb * cB, gy2 = f.ca * sB;
+    real turn = al_atan2(gx1 * gy2 - gy1 * gx2, gx1 * gx2 + gy1 * gy2);
+    // A short arc turns by [0, pi], a long one by [pi, 2 pi] (a narrow cone's map squeezes
+    // every turn toward 0, pi or 2 pi, where rounding picks atan2's sign): put each value
+    // on its arc's side.
+    if (long_arc) {
+        if (turn < AL_HALF_PI) turn += AL_TWO_PI;
+    } else {
+        turn = turn < -AL_HALF_PI ? turn + AL_TWO_PI : max(turn, AL_R(0.0));
+    }
+    real kk = f.ca * f.ca - f.cb * f.cb;  // t2^2 - t1^2 over (1 + t1^2)(1 + t2^2), >= 0
+    real arc = dot(c, axis) * f.sa * f.sb * turn;
+    arc -= dot(c, f.v1) * f.sb * f.ca * f.ca * al_ellipse_arc_h(sA, sB, d_s, f.cb, kk);
+    arc += dot(c, f.v2) * f.sa * f.cb * f.cb * al_ellipse_arc_h(cA, cB, d_c, f.ca, -kk);
+    return arc;
+}
+
+// The form factor of the cone about the unit direction n, clipped by n's horizon
+// (CONTRACT.md 2's diffuse for unit radiance when n is the surface normal), >= 0.
+real al_ellipse_clipped_ff(AlEllipseCone k, rvec3 n) {
+    if (!(k.ff > AL_R(0.0))) return AL_R(0.0);
+    AlConeFrame f = al_cone_frame(k);
+    rvec4 A;
+    int side = al_cone_side(f, k.axis, n, A);
+    if (side > 0) return k.ff * dot(n, k.axis);
+    if (side < 0) return AL_R(0.0);
+    real c0 = A.x, s0 = A.y, cd = A.z, sd = A.w;
     real cp = c0 * cd - s0 * sd, sp = s0 * cd + c0 * sd;  // phi0 + delta: the exit
     real cm = c0 * cd + s0 * sd, sm = s0 * cd - c0 * sd;  // phi0 - delta: the entry
-    // The arc phi0 - delta -> phi0 + delta. Its first term: the change in [0, 2 pi) of
-    // atan2(ca sin(phi), cb cos(phi)), which has the same side of pi as 2 delta.
-    real gx1 = cb * cm, gy1 = ca * sm, gx2 = cb * cp, gy2 = ca * sp;
-    real cr = gx1 * gy2 - gy1 * gx2, dt = gx1 * gx2 + gy1 * gy2;
-    real turn = al_atan2(cr, dt);
-    if (turn < AL_R(0.0)) turn += AL_TWO_PI;
-    real kk = ca * ca - cb * cb;  // t2^2 - t1^2 over (1 + t1^2)(1 + t2^2), >= 0
-    real arc = n3 * sa * sb * turn;
-    // sin and cos of phi at the exit less at the entry: 2 sin(delta) (cos, -sin)(phi0).
-    arc -= n1 * sb * ca * ca * al_ellipse_arc_h(sm, sp, AL_R(2.0) * c0 * sd, cb, kk);
-    arc += n2 * sa * cb * cb * al_ellipse_arc_h(cm, cp, -AL_R(2.0) * s0 * sd, ca, -kk);
+    // The arc phi0 - delta -> phi0 + delta; sin and cos of phi at the exit less at the
+    // entry: 2 sin(delta) (cos, -sin)(phi0).
+    real arc = al_cone_arc(f, k.axis, n, cm, sm, cp, sp, AL_R(2.0) * c0 * sd,
+                           -AL_R(2.0) * s0 * sd, cd < AL_R(0.0));
     // The horizon's arc exit -> entry: the angle between the two crossing directions,
     // in [0, pi) (the cone is convex and within the half space axis.omega > 0).
-    rvec3 wp = ca * cb * k.axis + sa * cb * cp * v1 + ca * sb * sp * v2;
-    rvec3 wm = ca * cb * k.axis + sa * cb * cm * v1 + ca * sb * sm * v2;
+    rvec3 wp = al_cone_point(f, k.axis, cp, sp), wm = al_cone_point(f, k.axis, cm, sm);
     real horizon = al_atan2(length(cross(wp, wm)), dot(wp, wm));
     return max((arc + horizon) / AL_TWO_PI, AL_R(0.0));
+}
+
+// The chord of a cut plane m (its arc A, al_cone_side) through the cone, exit -> entry
+// (counter-clockwise about m, less than pi), kept where m2.w >= 0 (side2 > 0: all of it):
+// its angle. The crossing is the planes' common line, +-(m x m2), on the chord's side, not a
+// point of the segment exit-entry: a cone near a hemisphere has the two nearly opposite,
+// and that segment passes by the origin (fp32 lost 0.03 rad of a chord so).
+real al_cone_chord(AlConeFrame f, rvec3 axis, rvec4 A, rvec3 m, rvec3 m2, int side2) {
+    real c0 = A.x, s0 = A.y, cd = A.z, sd = A.w;
+    rvec3 wp = al_cone_point(f, axis, c0 * cd - s0 * sd, s0 * cd + c0 * sd);
+    rvec3 wm = al_cone_point(f, axis, c0 * cd + s0 * sd, s0 * cd - c0 * sd);
+    wp = normalize(wp);
+    wm = normalize(wm);
+    if (side2 <= 0) {
+        // A great-circle arc shorter than pi meets a half space in one piece.
+        real ep = dot(m2, wp), em = dot(m2, wm);
+        if (ep < AL_R(0.0) && em < AL_R(0.0)) return AL_R(0.0);
+        if ((ep >= AL_R(0.0)) != (em >= AL_R(0.0))) {
+            rvec3 u = normalize(cross(m, m2));
+            rvec3 q = dot(cross(wp, u), m) >= AL_R(0.0) ? u : -u;
+            if (ep >= AL_R(0.0)) wm = q; else wp = q;
+        }
+    }
+    return al_atan2(max(dot(cross(wp, wm), m), AL_R(0.0)), dot(wp, wm));
+}
+
+// The form factor about the unit c of the cone clipped by two half spaces, m1.w >= 0 and
+// m2.w >= 0, whose planes differ: the boundary of a convex region, taken piece by piece
+// (Lambert's boundary integral): the parts of the elliptic boundary inside both (up to
+// two arcs, where the planes' common line is outside the cone) and the part of each
+// plane's chord inside the other half space, weighted by that plane's m.c. Domain: any
+// cone of al_ellipse_cone, unit c, m1, m2. Error: fp32 rounding of the angles; equal to
+// al_ellipse_clipped_ff where only one plane cuts the cone and c is its normal.
+real al_ellipse_clipped_ff2(AlEllipseCone k, rvec3 c, rvec3 m1, rvec3 m2) {
+    if (!(k.ff > AL_R(0.0))) return AL_R(0.0);
+    AlConeFrame f = al_cone_frame(k);
+    rvec4 A1, A2;
+    int side1 = al_cone_side(f, k.axis, m1, A1), side2 = al_cone_side(f, k.axis, m2, A2);
+    // Planes that coincide to 1e-6 rad are one (a view along n makes the LTC's z >= 0 n's
+    // horizon): each chord would lie on the other plane, rounding deciding which side, and
+    // the two would count it twice.
+    if (length(cross(m1, m2)) < AL_R(1e-6) && dot(m1, m2) > AL_R(0.0)) side2 = 1;
+    if (side1 < 0 || side2 < 0) return AL_R(0.0);
+    if (side1 > 0 && side2 > 0) return k.ff * dot(c, k.axis);
+    // Each plane's arc of phi as (start, length), to order the ends (a plane that holds the
+    // whole boundary: the whole circle); the ends themselves are each plane's entry and
+    // exit (al_ellipse_clipped_ff's products), not the cosines of these angles: where the
+    // cone nears a hemisphere its map's angles are that of a step (a near-plane light,
+    // ca ~ cb ~ 3e-7 in the LTC's space), and an fp32 angle's last bit moved a turn by pi.
+    real d1 = al_atan2(A1.w, A1.z), d2 = al_atan2(A2.w, A2.z);
+    real start1 = side1 > 0 ? AL_R(0.0) : al_atan2(A1.y, A1.x) - d1;
+    real start2 = side2 > 0 ? AL_R(0.0) : al_atan2(A2.y, A2.x) - d2;
+    real len1 = side1 > 0 ? AL_TWO_PI : AL_R(2.0) * d1;
+    real len2 = side2 > 0 ? AL_TWO_PI : AL_R(2.0) * d2;
+    rvec4 ends1 = rvec4(A1.x * A1.z + A1.y * A1.w, A1.y * A1.z - A1.x * A1.w,   // entry
+                        A1.x * A1.z - A1.y * A1.w, A1.y * A1.z + A1.x * A1.w);  // exit
+    rvec4 ends2 = rvec4(A2.x * A2.z + A2.y * A2.w, A2.y * A2.z - A2.x * A2.w,
+                        A2.x * A2.z - A2.y * A2.w, A2.y * A2.z + A2.x * A2.w);
+    real t = start2 - start1;
+    t -= AL_TWO_PI * floor(t / AL_TWO_PI);
+    real sum = AL_R(0.0);
+    // In the first arc's coordinates the second is [t, t + len2]: it meets [0, len1] in
+    // [t, min(t + len2, len1)] and, past 2 pi, in [0, min(t + len2 - 2 pi, len1)]. One plane
+    // whole: the other's arc alone.
+    for (int piece = 0; piece < 2; ++piece) {
+        real lo = piece == 0 ? t : AL_R(0.0);
+        real hi = piece == 0 ? t + len2 : t + len2 - AL_TWO_PI;
+        bool end2 = hi <= len1;  // the piece ends at the second plane's exit
+        hi = min(hi, len1);
+        if (side1 > 0) {  // the second plane's arc, once
+            lo = AL_R(0.0);
+            hi = piece == 0 ? len2 : AL_R(0.0);
+        }
+        if (side2 > 0) {  // the first plane's arc, once
+            lo = AL_R(0.0);
+            hi = piece == 0 ? len1 : AL_R(0.0);
+        }
+        if (!(hi > lo)) continue;
+        // (No swizzles: the CPU mirror's vectors have none.)
+        bool from2 = side1 > 0 || (piece == 0 && side2 <= 0), to2 = side1 > 0 || (side2 <= 0 && end2);
+        rvec2 a = from2 ? rvec2(ends2.x, ends2.y) : rvec2(ends1.x, ends1.y);
+        rvec2 b = to2 ? rvec2(ends2.z, ends2.w) : rvec2(ends1.z, ends1.w);
+        sum += al_cone_arc(f, k.axis, c, a.x, a.y, b.x, b.y, b.y - a.y, b.x - a.x,
+                           hi - lo > AL_PI);
+    }
+    if (side1 == 0) sum += dot(m1, c) * al_cone_chord(f, k.axis, A1, m1, m2, side2);
+    if (side2 == 0) sum += dot(m2, c) * al_cone_chord(f, k.axis, A2, m2, m1, side1);
+    return max(sum / AL_TWO_PI, AL_R(0.0));
 }

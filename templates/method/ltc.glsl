@@ -24,11 +24,11 @@
 // table=fit (GGX) evaluates the coefficients in closed form (templates/method/ltc_ggx_fit.glsl,
 // al_ltc_fit_lookup) and the proxy by Snyder's formula: no texture, no sampler.
 // GPU cost (navi21, `arealight gpu-cost`, the validation kernel): GGX polygon default
-// 999 (2.01x its point light's 498; 2719 instructions, 96 VGPRs); table=fit 1923
-// (3.86x; 3588 instructions, 96 VGPRs). The two-lobe tables' second edge sum: blinn /
-// beckmann / phong polygon 1099 / 1095 / 1097 (1.92x / 1.98x / 2.40x; one lobe, before the
-// albedo ceiling, 949 / 945 / 947); their disk, sphere and ellipsoid +29-31% with
-// horizon=clip, +19-21% with proxy.
+// 1 073 (2.15x its point light's 498; 3 008 instructions, 96 VGPRs); table=fit 2 000
+// (4.02x; 3 882 instructions). The two-lobe tables' second edge sum: blinn / beckmann /
+// phong polygon 1 193 / 1 189 / 1 191 (2.08x / 2.15x / 2.61x; one lobe, before the albedo
+// ceiling and the clip to n's horizon, 949 / 945 / 947); their disk, sphere and ellipsoid
+// +29-31% with horizon=clip, +19-21% with proxy (before the clip to n's horizon).
 
 // Two lobes (include/arealight/ltc_table.hpp, fit/ltc_fit.cpp): a transformed clamped
 // cosine has a power-law tail, as GGX's lobe has, while the Phong, Blinn and Beckmann
@@ -200,17 +200,16 @@ void al_ltc_sum_edge(hvec3 a, hvec3 b, AL_INOUT(AlLtcSum) s) {
 
 #ifndef AL_LIGHT_CURVED
 // The same for the Lambert term in the working precision, exact, about n in the
-// case's frame (za = n.a, zb = n.b).
+// case's frame (za = n.a, zb = n.b; q the edge's crossing of n's horizon where they
+// differ in sign, al_crossing).
 // The edge's unit normal m comes from the vertex offsets (light/polygon.glsl's rule: a x (b - a)
 // with b - a formed from the offsets, which the sums a, b would round away when p is
 // near the light's plane); the clipped arc keeps it.
-void al_lambert_clip_edge(rvec3 a, rvec3 b, real za, real zb, rvec3 m, rvec3 n,
+void al_lambert_clip_edge(rvec3 a, rvec3 b, real za, real zb, rvec3 q, rvec3 m, rvec3 n,
                           AL_INOUT(real) sum, AL_INOUT(rvec3) exit_pt, AL_INOUT(rvec3) entry_pt,
                           AL_INOUT(bool) has_exit) {
     bool ia = za >= AL_R(0.0), ib = zb >= AL_R(0.0);
     if (!ia && !ib) return;
-    rvec3 q = a;
-    if (ia != ib) q = al_crossing(a, b, za, zb);
     rvec3 a0 = ia ? a : q, b0 = ib ? b : q;
     // The arc's sine along m (light/polygon.glsl's al_arc), not |a0 x b0|: m carries the
     // offsets' precision.
@@ -248,9 +247,18 @@ void al_ltc_fit_lookup(real param, real nv, real sin_v, AL_INOUT(rvec4) m,
     real y = w * AL_R(2.0317460317460317) - AL_R(1.0);  // 2 w / (62 / 63) - 1
     real w2 = w * w, w4 = w2 * w2;
     real cos_v = AL_R(1.0) - w2;
-    // The view's own angle (not the clamped row's): the lobe follows the view past 62/63.
-    real phi = clamp(al_ltc_angle(sin_v, nv) + alpha * al_ltc_fit_q(x, y), AL_R(0.0),
-                     AL_HALF_PI);
+    // Polygons (clipped to n's hemisphere, al_ltc_horizon_arc): the clamped row's view
+    // angle, as for every other coefficient, so past 62/63 the lobe stays the row's; a lobe
+    // turned onto the horizon lost half its mass to that clip (own hard GGX set, views at
+    // n.v ~ 1.5e-3: 0.6 against 0.9). Curved lights, whose LTC counts its mass below n's
+    // horizon: the view's own angle, the lobe following the view (ellipsoid stress 0.009,
+    // with the row's 0.028).
+#ifdef AL_LIGHT_CURVED
+    real view_angle = al_ltc_angle(sin_v, nv);
+#else
+    real view_angle = al_ltc_angle(w * sqrt(AL_R(2.0) - w2), cos_v);  // sin = w sqrt(2 - w^2)
+#endif
+    real phi = clamp(view_angle + alpha * al_ltc_fit_q(x, y), AL_R(0.0), AL_HALF_PI);
     real cp = cos(phi), sp = sin(phi);
     real d = al_ltc_fit_d(x, y);
     // k = (a - b d) / N > 0 in every cell; the floor only keeps a fit's excursion finite.
@@ -464,7 +472,8 @@ real al_ltc_magnitude(AlLtc L, hvec3 vector_ff, real f0) {
 // exceeds the albedo where its kernel is signed (two lobes: D_o + K D_s, K < 0, is
 // negative in its far tail, so a light that holds the core but not that tail overshoots)
 // and where the light reaches below n's horizon (the clip is the LTC's own z >= 0, which
-// counts lobe mass beyond the true horizon). Domain: any lookup L and form; error: never
+// counts lobe mass beyond the true horizon, unless al_ltc_horizon_arc clips there too:
+// polygons with horizon=clip). Domain: any lookup L and form; error: never
 // larger than the unclamped product's (public glossy beckmann poly8 065: 1.0166 ->
 // 1.0000, reference 1.0000; docs/ltc.md, "Albedo ceiling"). Cost: two inverse square
 // roots a shading point, formed at the lookup (ggx polygon 986 -> 999 cycles a wave,
@@ -472,6 +481,49 @@ real al_ltc_magnitude(AlLtc L, hvec3 vector_ff, real f0) {
 real al_ltc_specular(AlLtc L, real form, hvec3 vector_ff, real f0) {
     return clamp(form * al_ltc_magnitude(L, vector_ff, f0), AL_R(0.0), max(L.albedo, AL_R(0.0)));
 }
+
+#ifndef AL_LIGHT_CURVED
+// A direction's image t = Minv (w.tx, w.ty, w.n) in the LTC's space (not unit).
+rvec3 al_ltc_image(AlLtc L, rvec3 w) {
+    return rvec3(dot(w, L.row0), dot(w, L.row1), dot(w, L.row2));
+}
+
+#ifndef AL_HORIZON_PROXY
+// horizon=clip integrates the light clipped to n's hemisphere, not only to the LTC's own
+// z >= 0: the lobe's true integrand (f (n.w))+ vanishes below n's horizon, and the tables
+// are normalised to the LTC's mass above it (I_H, al_ltc_upper_integral), but the LTC's
+// z >= 0 is the plane (-d, 0, a).w = 0 in the case's frame, so a light below n's horizon
+// and above that plane was counted (public horizon blinn poly7 093: 5.4x the reference,
+// 1.7x with this clip; docs/ltc.md, "True horizon"). Each edge is cut where it crosses n's
+// horizon (the Lambert term's crossing, al_crossing) and the region is closed along the
+// horizon from the exit lx to the entry le, an arc of at most pi counter-clockwise about n.
+// Linear maps keep great circles and convexity, so the images form one convex polygon
+// again, clipped to z >= 0 as before. The arc's image lies in the plane with normal
+// nu = (-d, 0, a) (second lobe, x and y over s: (-d s, 0, a)), which the edge's direction
+// and its crossing of z = 0 are taken from, since a x b and the segment a-b lose them as
+// the arc nears pi (p near the light's plane).
+void al_ltc_horizon_arc(AlLtc L, rvec3 lx, rvec3 le, AL_INOUT(AlLtcSum) s, real sx) {
+    rvec3 sc = rvec3(sx, sx, AL_R(1.0));
+    hvec3 a = hvec3(AL_LTC_UNIT(al_ltc_image(L, lx) * sc));
+    hvec3 b = hvec3(AL_LTC_UNIT(al_ltc_image(L, le) * sc));
+    hvec3 nu = hvec3(normalize(rvec3(-L.m.w, AL_R(0.0), L.m.x * sx)));
+    bool ia = a.z >= hreal(0.0), ib = b.z >= hreal(0.0);
+    if (!ia && !ib) return;
+    // Where it crosses z = 0: the planes' common line, +-y, on the arc's side (a point of
+    // the segment a-b would pass by the origin as the arc nears pi).
+    hvec3 y = hvec3(hreal(0.0), hreal(1.0), hreal(0.0));
+    hvec3 q = dot(cross(a, y), nu) >= hreal(0.0) ? y : -y;
+    hvec3 a0 = ia ? a : q, b0 = ib ? b : q;
+    hvec3 m = nu * max(dot(cross(a0, b0), nu), hreal(0.0));
+    s.ff += m * al_edge_factor(dot(a0, b0), m);
+    if (ia && !ib) {
+        s.exit_pt = q;
+        s.has_exit = true;
+    }
+    if (!ia && ib) s.entry_pt = q;
+}
+#endif
+#endif
 
 #ifndef AL_LIGHT_CURVED
 // Diffuse and specular (CONTRACT.md 2; no ndf or moment).
@@ -502,17 +554,32 @@ vec4 al_shade(AlCase c) {
         db = rvec3(c.verts[idx]);
         pb = normalize(center + db);
         zb = dot(pb, n);
-        rvec3 tb = rvec3(dot(pb, L.row0), dot(pb, L.row1), dot(pb, L.row2));
+        rvec3 tb = al_ltc_image(L, pb);
         hb = hvec3(AL_LTC_UNIT(tb));
 #ifdef AL_LTC_TWO_LOBES
         hb2 = hvec3(AL_LTC_UNIT(tb * AL_LTC_SECOND));
 #endif
         if (k > 0) {
             rvec3 me = normalize(cross(center + da, db - da));
-            al_lambert_clip_edge(pa, pb, za, zb, me, n, lambert, lx, le, has_lx);
+            bool ia = za >= AL_R(0.0), ib = zb >= AL_R(0.0);
+            rvec3 q = ia != ib ? al_crossing(pa, pb, za, zb) : pa;
+            al_lambert_clip_edge(pa, pb, za, zb, q, me, n, lambert, lx, le, has_lx);
+#ifdef AL_HORIZON_PROXY
             al_ltc_sum_edge(ha, hb, s1);
 #ifdef AL_LTC_TWO_LOBES
             al_ltc_sum_edge(ha2, hb2, s2);
+#endif
+#else
+            // horizon=clip: the edge's part above n's horizon (al_ltc_horizon_edge).
+            if (ia || ib) {
+                rvec3 tq = al_ltc_image(L, q);
+                hvec3 hq = hvec3(AL_LTC_UNIT(tq));
+                al_ltc_sum_edge(ia ? ha : hq, ib ? hb : hq, s1);
+#ifdef AL_LTC_TWO_LOBES
+                hvec3 hq2 = hvec3(AL_LTC_UNIT(tq * AL_LTC_SECOND));
+                al_ltc_sum_edge(ia ? ha2 : hq2, ib ? hb2 : hq2, s2);
+#endif
+            }
 #endif
         }
         pa = pb;
@@ -528,6 +595,14 @@ vec4 al_shade(AlCase c) {
     // Its sine is taken along n and floored at 0, so that an arc of nearly pi (p near
     // the light's plane, the foot inside) cannot flip sign through rounding.
     if (has_lx) lambert += al_ltc_angle(max(dot(le, cross(n, lx)), AL_R(0.0)), dot(lx, le));
+#ifndef AL_HORIZON_PROXY
+    if (has_lx && dot(le, le) > AL_R(0.0)) {
+        al_ltc_horizon_arc(L, lx, le, s1, AL_R(1.0));
+#ifdef AL_LTC_TWO_LOBES
+        al_ltc_horizon_arc(L, lx, le, s2, AL_LTC_SECOND.x);
+#endif
+    }
+#endif
     real diffuse = max(lambert, AL_R(0.0)) / AL_TWO_PI;
 
     real specular = AL_R(0.0);

@@ -14,12 +14,16 @@
 
 #ifdef AL_LIGHT_CURVED
 // The LTC-space form factor of a transformed ellipse's cone k (vector form factor
-// vector_ff): the proxy sphere's or the exactly clipped one.
-real al_ltc_ellipse_form(AlEllipseCone k, hvec3 vector_ff) {
+// vector_ff): the proxy sphere's, or the one clipped exactly by the LTC's z >= 0 and by
+// n's horizon, whose image is the plane with normal nu (method/ltc.glsl's
+// al_ltc_horizon_arc: the integrand is 0 below n's horizon, and the tables are
+// normalised to the LTC's mass above it; docs/ltc.md, "True horizon").
+real al_ltc_ellipse_form(AlEllipseCone k, hvec3 vector_ff, rvec3 nu) {
 #ifdef AL_HORIZON_PROXY
     return al_ltc_proxy_form(vector_ff);
 #else
-    return al_ellipse_clipped_ff(k, rvec3(AL_R(0.0), AL_R(0.0), AL_R(1.0)));
+    rvec3 z = rvec3(AL_R(0.0), AL_R(0.0), AL_R(1.0));
+    return al_ellipse_clipped_ff2(k, z, z, nu);
 #endif
 }
 
@@ -39,11 +43,14 @@ vec4 al_shade(AlCase c) {
         if (dot(cross(Ut, Vt), Ct) < AL_R(0.0)) Vt = -Vt;
         AlEllipseCone k = al_ellipse_cone(Ct, Ut, Vt);
         hvec3 vector_ff = hvec3(AL_TWO_PI * k.ff * k.axis);
-        real form = al_ltc_ellipse_form(k, vector_ff);
+        // n's horizon in the LTC's space: normal (-d, 0, a), second lobe (-d, 0, a / s).
+        real form = al_ltc_ellipse_form(k, vector_ff, normalize(rvec3(-L.m.w, AL_R(0.0), L.m.x)));
 #ifdef AL_LTC_TWO_LOBES
         // The second lobe (method/ltc.glsl): x and y over s, a map of positive determinant.
         AlEllipseCone k2 = al_ellipse_cone(Ct * AL_LTC_SECOND, Ut * AL_LTC_SECOND, Vt * AL_LTC_SECOND);
-        form += L.amp.z * al_ltc_ellipse_form(k2, hvec3(AL_TWO_PI * k2.ff * k2.axis));
+        form += L.amp.z * al_ltc_ellipse_form(k2, hvec3(AL_TWO_PI * k2.ff * k2.axis),
+                                              normalize(rvec3(-L.m.w, AL_R(0.0),
+                                                              L.m.x * AL_LTC_SECOND.x)));
 #endif
         specular = al_ltc_specular(L, form, vector_ff, real(c.params.w));
     }
