@@ -298,12 +298,14 @@ real al_cone_chord(AlConeFrame f, rvec3 axis, rvec4 A, rvec3 m, rvec3 m2, int si
 }
 
 // The form factor about the unit c of the cone clipped by two half spaces, m1.w >= 0 and
-// m2.w >= 0, whose planes differ: the boundary of a convex region, taken piece by piece
-// (Lambert's boundary integral): the parts of the elliptic boundary inside both (up to
-// two arcs, where the planes' common line is outside the cone) and the part of each
-// plane's chord inside the other half space, weighted by that plane's m.c. Domain: any
-// cone of al_ellipse_cone, unit c, m1, m2. Error: fp32 rounding of the angles; equal to
-// al_ellipse_clipped_ff where only one plane cuts the cone and c is its normal.
+// m2.w >= 0 (method/ltc_ellipse.glsl: the LTC's z >= 0 and n's horizon): the boundary of a
+// convex region, taken piece by piece (Lambert's boundary integral): the parts of the
+// elliptic boundary inside both (up to two arcs, where the planes' common line is outside
+// the cone) and the part of each plane's chord inside the other half space, weighted by
+// that plane's m.c; planes within 1e-6 rad of each other are one. Domain: any cone of
+// al_ellipse_cone, unit c, m1, m2. Error: fp32 rounding; against the polygon LTC over the
+// light's 1024-gon, horizon-crossing lights included, relL2 8e-6 (tests/test_ltc_curved.cpp);
+// al_ellipse_clipped_ff's value where only one plane cuts the cone and c is its normal.
 real al_ellipse_clipped_ff2(AlEllipseCone k, rvec3 c, rvec3 m1, rvec3 m2) {
     if (!(k.ff > AL_R(0.0))) return AL_R(0.0);
     AlConeFrame f = al_cone_frame(k);
