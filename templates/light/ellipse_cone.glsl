@@ -221,6 +221,13 @@ int al_cone_side(AlConeFrame f, rvec3 axis, rvec3 m, AL_INOUT(rvec4) arc) {
     return 0;
 }
 
+// A cut plane's entry phi0 - delta and exit phi0 + delta as (cos, sin, cos, sin), from its
+// arc (al_cone_side) by the angle-sum products.
+rvec4 al_cone_ends(rvec4 A) {
+    return rvec4(A.x * A.z + A.y * A.w, A.y * A.z - A.x * A.w,
+                 A.x * A.z - A.y * A.w, A.y * A.z + A.x * A.w);
+}
+
 // The boundary direction at phi = (cos, sin).
 rvec3 al_cone_point(AlConeFrame f, rvec3 axis, real c, real s) {
     return f.ca * f.cb * axis + f.sa * f.cb * c * f.v1 + f.ca * f.sb * s * f.v2;
@@ -259,13 +266,12 @@ real al_ellipse_clipped_ff(AlEllipseCone k, rvec3 n) {
     int side = al_cone_side(f, k.axis, n, A);
     if (side > 0) return k.ff * dot(n, k.axis);
     if (side < 0) return AL_R(0.0);
-    real c0 = A.x, s0 = A.y, cd = A.z, sd = A.w;
-    real cp = c0 * cd - s0 * sd, sp = s0 * cd + c0 * sd;  // phi0 + delta: the exit
-    real cm = c0 * cd + s0 * sd, sm = s0 * cd - c0 * sd;  // phi0 - delta: the entry
+    rvec4 e = al_cone_ends(A);
+    real cm = e.x, sm = e.y, cp = e.z, sp = e.w;
     // The arc phi0 - delta -> phi0 + delta; sin and cos of phi at the exit less at the
     // entry: 2 sin(delta) (cos, -sin)(phi0).
-    real arc = al_cone_arc(f, k.axis, n, cm, sm, cp, sp, AL_R(2.0) * c0 * sd,
-                           -AL_R(2.0) * s0 * sd, cd < AL_R(0.0));
+    real arc = al_cone_arc(f, k.axis, n, cm, sm, cp, sp, AL_R(2.0) * A.x * A.w,
+                           -AL_R(2.0) * A.y * A.w, A.z < AL_R(0.0));
     // The horizon's arc exit -> entry: the angle between the two crossing directions,
     // in [0, pi) (the cone is convex and within the half space axis.omega > 0).
     rvec3 wp = al_cone_point(f, k.axis, cp, sp), wm = al_cone_point(f, k.axis, cm, sm);
@@ -279,11 +285,9 @@ real al_ellipse_clipped_ff(AlEllipseCone k, rvec3 n) {
 // point of the segment exit-entry: a cone near a hemisphere has the two nearly opposite,
 // and that segment passes by the origin (fp32 lost 0.03 rad of a chord so).
 real al_cone_chord(AlConeFrame f, rvec3 axis, rvec4 A, rvec3 m, rvec3 m2, int side2) {
-    real c0 = A.x, s0 = A.y, cd = A.z, sd = A.w;
-    rvec3 wp = al_cone_point(f, axis, c0 * cd - s0 * sd, s0 * cd + c0 * sd);
-    rvec3 wm = al_cone_point(f, axis, c0 * cd + s0 * sd, s0 * cd - c0 * sd);
-    wp = normalize(wp);
-    wm = normalize(wm);
+    rvec4 e = al_cone_ends(A);
+    rvec3 wp = normalize(al_cone_point(f, axis, e.z, e.w));
+    rvec3 wm = normalize(al_cone_point(f, axis, e.x, e.y));
     if (side2 <= 0) {
         // A great-circle arc shorter than pi meets a half space in one piece.
         real ep = dot(m2, wp), em = dot(m2, wm);
@@ -319,7 +323,7 @@ real al_ellipse_clipped_ff2(AlEllipseCone k, rvec3 c, rvec3 m1, rvec3 m2) {
     if (side1 > 0 && side2 > 0) return k.ff * dot(c, k.axis);
     // Each plane's arc of phi as (start, length), to order the ends (a plane that holds the
     // whole boundary: the whole circle); the ends themselves are each plane's entry and
-    // exit (al_ellipse_clipped_ff's products), not the cosines of these angles: where the
+    // exit (al_cone_ends), not the cosines of these angles: where the
     // cone nears a hemisphere its map's angles are that of a step (a near-plane light,
     // ca ~ cb ~ 3e-7 in the LTC's space), and an fp32 angle's last bit moved a turn by pi.
     real d1 = al_atan2(A1.w, A1.z), d2 = al_atan2(A2.w, A2.z);
@@ -327,10 +331,7 @@ real al_ellipse_clipped_ff2(AlEllipseCone k, rvec3 c, rvec3 m1, rvec3 m2) {
     real start2 = side2 > 0 ? AL_R(0.0) : al_atan2(A2.y, A2.x) - d2;
     real len1 = side1 > 0 ? AL_TWO_PI : AL_R(2.0) * d1;
     real len2 = side2 > 0 ? AL_TWO_PI : AL_R(2.0) * d2;
-    rvec4 ends1 = rvec4(A1.x * A1.z + A1.y * A1.w, A1.y * A1.z - A1.x * A1.w,   // entry
-                        A1.x * A1.z - A1.y * A1.w, A1.y * A1.z + A1.x * A1.w);  // exit
-    rvec4 ends2 = rvec4(A2.x * A2.z + A2.y * A2.w, A2.y * A2.z - A2.x * A2.w,
-                        A2.x * A2.z - A2.y * A2.w, A2.y * A2.z + A2.x * A2.w);
+    rvec4 ends1 = al_cone_ends(A1), ends2 = al_cone_ends(A2);
     real t = start2 - start1;
     t -= AL_TWO_PI * floor(t / AL_TWO_PI);
     real sum = AL_R(0.0);

@@ -482,6 +482,14 @@ real al_ltc_specular(AlLtc L, real form, hvec3 vector_ff, real f0) {
     return clamp(form * al_ltc_magnitude(L, vector_ff, f0), AL_R(0.0), max(L.albedo, AL_R(0.0)));
 }
 
+// n's horizon in the LTC's space: the unit normal of its image plane, (-d, 0, a) (the
+// hemisphere's lune, al_ltc_upper_integral); sx scales the image's x and y (the second
+// lobe, 1 / s: (-d, 0, a / s)). Polygons and curved lights clip there (al_ltc_horizon_arc,
+// method/ltc_ellipse.glsl).
+rvec3 al_ltc_horizon_normal(AlLtc L, real sx) {
+    return normalize(rvec3(-L.m.w, AL_R(0.0), L.m.x * sx));
+}
+
 #ifndef AL_LIGHT_CURVED
 // A direction's image t = Minv (w.tx, w.ty, w.n) in the LTC's space (not unit).
 rvec3 al_ltc_image(AlLtc L, rvec3 w) {
@@ -506,7 +514,7 @@ void al_ltc_horizon_arc(AlLtc L, rvec3 lx, rvec3 le, AL_INOUT(AlLtcSum) s, real 
     rvec3 sc = rvec3(sx, sx, AL_R(1.0));
     hvec3 a = hvec3(AL_LTC_UNIT(al_ltc_image(L, lx) * sc));
     hvec3 b = hvec3(AL_LTC_UNIT(al_ltc_image(L, le) * sc));
-    hvec3 nu = hvec3(normalize(rvec3(-L.m.w, AL_R(0.0), L.m.x * sx)));
+    hvec3 nu = hvec3(al_ltc_horizon_normal(L, sx));
     bool ia = a.z >= hreal(0.0), ib = b.z >= hreal(0.0);
     if (!ia && !ib) return;
     // Where it crosses z = 0: the planes' common line, +-y, on the arc's side (a point of

@@ -43,14 +43,12 @@ vec4 al_shade(AlCase c) {
         if (dot(cross(Ut, Vt), Ct) < AL_R(0.0)) Vt = -Vt;
         AlEllipseCone k = al_ellipse_cone(Ct, Ut, Vt);
         hvec3 vector_ff = hvec3(AL_TWO_PI * k.ff * k.axis);
-        // n's horizon in the LTC's space: normal (-d, 0, a), second lobe (-d, 0, a / s).
-        real form = al_ltc_ellipse_form(k, vector_ff, normalize(rvec3(-L.m.w, AL_R(0.0), L.m.x)));
+        real form = al_ltc_ellipse_form(k, vector_ff, al_ltc_horizon_normal(L, AL_R(1.0)));
 #ifdef AL_LTC_TWO_LOBES
         // The second lobe (method/ltc.glsl): x and y over s, a map of positive determinant.
         AlEllipseCone k2 = al_ellipse_cone(Ct * AL_LTC_SECOND, Ut * AL_LTC_SECOND, Vt * AL_LTC_SECOND);
         form += L.amp.z * al_ltc_ellipse_form(k2, hvec3(AL_TWO_PI * k2.ff * k2.axis),
-                                              normalize(rvec3(-L.m.w, AL_R(0.0),
-                                                              L.m.x * AL_LTC_SECOND.x)));
+                                              al_ltc_horizon_normal(L, AL_LTC_SECOND.x));
 #endif
         specular = al_ltc_specular(L, form, vector_ff, real(c.params.w));
     }
