@@ -136,7 +136,9 @@ int run_bench(const std::string& cases_path, const std::vector<std::string>& nam
     opt.min_cases = min_cases;
     opt.repeats = repeats;
     // Before any Vulkan call: Mesa reads its cache location once per process.
-    if (backend == "vulkan") opt.shader_cache_dir = arealight::use_private_shader_cache();
+    // Declared before the evaluator, so that it outlives every Vulkan object.
+    std::optional<arealight::PrivateShaderCache> cache;
+    if (backend == "vulkan") opt.shader_cache_dir = cache.emplace().path();
     arealight::EvalOptions eo;
     eo.backend = backend == "cpu" ? arealight::Backend::Cpu : arealight::Backend::Vulkan;
     auto ev = arealight::Evaluator::create(eo, print_diagnostic);
@@ -287,7 +289,9 @@ int run_report(const ReportArgs& a, bool sweep) {
         opt.reference = ref;
     }
     // Before any Vulkan call: Mesa reads its cache location once per process.
-    opt.shader_cache_dir = arealight::use_private_shader_cache();
+    // Declared before the evaluator, so that it outlives every Vulkan object.
+    arealight::PrivateShaderCache cache;
+    opt.shader_cache_dir = cache.path();
     arealight::EvalOptions eo;
     auto ev = arealight::Evaluator::create(eo, print_diagnostic);
     if (!ev) return kRuntime;

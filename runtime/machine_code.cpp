@@ -107,14 +107,21 @@ std::optional<MachineCodeStats> count_cached_machine_code(const std::string& cac
     return count_files(cache_entries(cache_dir), diag);
 }
 
-std::string use_private_shader_cache() {
+PrivateShaderCache::PrivateShaderCache() {
     std::error_code ec;
     const fs::path dir =
-        fs::temp_directory_path() / ("arealight-mesa-cache-" + std::to_string(::getpid()));
+        fs::temp_directory_path(ec) / ("arealight-mesa-cache-" + std::to_string(::getpid()));
+    if (ec) return;
     fs::remove_all(dir, ec);
-    if (!fs::create_directories(dir, ec)) return "";
+    if (!fs::create_directories(dir, ec)) return;
     ::setenv("MESA_SHADER_CACHE_DIR", dir.c_str(), 1);
-    return dir.string();
+    path_ = dir.string();
+}
+
+PrivateShaderCache::~PrivateShaderCache() {
+    if (path_.empty()) return;
+    std::error_code ec;
+    fs::remove_all(path_, ec);
 }
 
 std::optional<MachineCodeStats> lavapipe_machine_code(const Variant& v,

@@ -6,6 +6,9 @@ file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 
 include("${CMAKE_CURRENT_LIST_DIR}/cli_support.cmake")
+# The commands' private shader caches go under TMPDIR and must be gone when they exit.
+file(MAKE_DIRECTORY "${WORK}/tmp")
+set(ENV{TMPDIR} "${WORK}/tmp")
 
 # bench times variants side by side and reports deterministic instruction counts:
 # SPIR-V after optimization and the x86-64 lavapipe stores in its shader cache. The
@@ -36,6 +39,10 @@ expect_exit(0 "${AREALIGHT}" sweep --cases "${SOURCE}/../examples/cases.json" --
 file(READ "${WORK}/sweep/sweep.md" md)
 expect_contains("${md}" "sweep.md" "sided=one,verts=4` | 10 |" "sided=one,verts=4` | 1000 |")
 expect_files("${WORK}/sweep" "sweep" sweep.json sweep_time.svg sweep_error.svg)
+file(GLOB left "${WORK}/tmp/arealight-mesa-cache-*")
+if(left)
+  message(FATAL_ERROR "bench, report and sweep left their shader caches behind: ${left}")
+endif()
 
 # The GPU cost (RADV on a null device): a gpu object per row where RADV is installed,
 # none and one warning where it is not.

@@ -17,7 +17,7 @@ struct BenchOptions {
     std::size_t min_cases = 1 << 16;  // cases are repeated up to this count per dispatch
     int repeats = 9;
     // When set, SPIR-V and lavapipe x86-64 instruction counts are taken; the folder
-    // must be MESA_SHADER_CACHE_DIR (see use_private_shader_cache).
+    // must be MESA_SHADER_CACHE_DIR (see PrivateShaderCache).
     std::string shader_cache_dir;
     // RADV's figures per variant (gpu_cost.hpp); nullopt: none. Without RADV the rows
     // go without, after one warning.

@@ -25,13 +25,26 @@ std::optional<MachineCodeStats> count_cached_machine_code(const std::string& cac
 // Compiles the variant on lavapipe and counts the code the driver adds to
 // `cache_dir`. Mesa reads MESA_SHADER_CACHE_DIR once per process, so the caller
 // must point it at `cache_dir` before the first Vulkan call (see
-// use_private_shader_cache); the cache must not already hold this variant.
+// PrivateShaderCache); the cache must not already hold this variant.
 std::optional<MachineCodeStats> lavapipe_machine_code(const Variant& v,
                                                       const std::string& cache_dir,
                                                       const DiagnosticConsumer& diag);
 
-// Creates an empty folder for the shader cache and sets MESA_SHADER_CACHE_DIR to it.
-// Call before any Vulkan use; returns the folder, or empty on failure.
-std::string use_private_shader_cache();
+// An empty shader cache folder of this process, named by MESA_SHADER_CACHE_DIR from its
+// construction, removed with its contents at its destruction (the driver's cache is a
+// measuring instrument, not state to keep). Construct it before any Vulkan use and
+// destroy it after the last Vulkan object; path() is empty when the folder could not be
+// made.
+class PrivateShaderCache {
+public:
+    PrivateShaderCache();
+    ~PrivateShaderCache();
+    PrivateShaderCache(const PrivateShaderCache&) = delete;
+    PrivateShaderCache& operator=(const PrivateShaderCache&) = delete;
+    const std::string& path() const { return path_; }
+
+private:
+    std::string path_;
+};
 
 }  // namespace arealight

@@ -73,7 +73,7 @@ struct ReportOptions {
     double dispatch_seconds = 0.02;  // cases are repeated until a dispatch lasts about this
     double floor = 1e-3;             // of the relative error (shared/tools/score metric)
     unsigned threads = 1;            // oracle threads
-    // MESA_SHADER_CACHE_DIR of this process (use_private_shader_cache); empty: no
+    // MESA_SHADER_CACHE_DIR of this process (PrivateShaderCache); empty: no
     // x86-64 counts.
     std::string shader_cache_dir;
     // Oracle values by case id, when already computed for these cases (report only;
