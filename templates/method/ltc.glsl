@@ -490,12 +490,13 @@ rvec3 al_ltc_horizon_normal(AlLtc L, real sx) {
     return normalize(rvec3(-L.m.w, AL_R(0.0), L.m.x * sx));
 }
 
-#ifndef AL_LIGHT_CURVED
-// A direction's image t = Minv (w.tx, w.ty, w.n) in the LTC's space (not unit).
+// A vector's image t = Minv (w.tx, w.ty, w.n) in the LTC's space (not unit): a
+// direction's, or a curved light's centre and semi-diameters (method/ltc_ellipse.glsl).
 rvec3 al_ltc_image(AlLtc L, rvec3 w) {
     return rvec3(dot(w, L.row0), dot(w, L.row1), dot(w, L.row2));
 }
 
+#ifndef AL_LIGHT_CURVED
 #ifndef AL_HORIZON_PROXY
 // horizon=clip integrates the light clipped to n's hemisphere, not only to the LTC's own
 // z >= 0: the lobe's true integrand (f (n.w))+ vanishes below n's horizon, and the tables
@@ -578,7 +579,7 @@ vec4 al_shade(AlCase c) {
             al_ltc_sum_edge(ha2, hb2, s2);
 #endif
 #else
-            // horizon=clip: the edge's part above n's horizon (al_ltc_horizon_edge).
+            // horizon=clip: the edge's part above n's horizon, cut at q (al_ltc_horizon_arc).
             if (ia || ib) {
                 rvec3 tq = al_ltc_image(L, q);
                 hvec3 hq = hvec3(AL_LTC_UNIT(tq));

@@ -34,8 +34,9 @@ real al_ltc_ellipse_form(AlEllipseCone k, hvec3 vector_ff, rvec3 nu) {
 // conjugate pair U, V) within its plane about C: the smaller of the ball's cone (sin beta =
 // a / |C|) and, with s the sine of C's angle from the plane's normal, tan beta =
 // a / (|C| - a s) (exact for a disc facing p, as a sphere's record is). The two-lobe
-// LTC's tail is too heavy for a Gaussian lobe: a light far off the lobe's axis got up to 250x its specular (public horizon
-// sphere 067: 9.1e-4 against 3.6e-6; docs/ltc.md, "Phong's tail bound"). Every light is
+// LTC's tail is too heavy for a Gaussian lobe: a light far off the lobe's axis got up to
+// 250x its specular (public horizon sphere 067: 9.1e-4 against 3.6e-6; docs/ltc.md,
+// "Phong's tail bound"). Every light is
 // within the bound, so the clamp never moves an estimate away from the truth. Domain: any
 // record with |C| > 0; a light whose ball holds p, or meets r, has no bound (x = 1 still
 // holds: the min is then with (N+2)/2 diffuse).
@@ -51,12 +52,10 @@ real al_ltc_phong_tail_bound(AlCase c, rvec3 C, rvec3 U, rvec3 V, real diffuse) 
     real t = sqrt(cc) - sqrt(a2) * s;
     // r.w over the light: cos(max(theta - beta, 0)), theta r's angle from C.
     real sb2 = t > AL_R(0.0) ? min(a2 / cc, a2 / (t * t + a2)) : a2 / cc;
-    real rc = dot(r, C);
     real x = AL_R(1.0);
     if (sb2 < AL_R(1.0)) {
         real cb = sqrt(AL_R(1.0) - sb2), sb = sqrt(sb2);
-        real inv = inversesqrt(cc);
-        real ct = rc * inv, st = sqrt(max(AL_R(1.0) - ct * ct, AL_R(0.0)));
+        real ct = dot(r, C) * inversesqrt(cc), st = sqrt(max(AL_R(1.0) - ct * ct, AL_R(0.0)));
         if (ct < cb) x = max(ct * cb + st * sb, AL_R(0.0));
     }
     // x raised by 8 fp32 ulps: its rounding, raised to the power N (up to 1e4: 5e-4
@@ -74,14 +73,12 @@ vec4 al_shade(AlCase c) {
     AlLtc L = al_ltc_lookup(c);
     real diffuse = al_ellipse_clipped_ff(al_ellipse_cone(C, U, V), L.n);
     real specular = AL_R(0.0);
-#ifdef AL_DIST_PHONG
-    // Formed first, so that one value, not r, stays live through the ellipse's cones.
-    real bound = al_ltc_phong_tail_bound(c, C, U, V, diffuse);
-#endif
     if (L.nv > AL_R(0.0)) {
-        rvec3 Ct = rvec3(dot(C, L.row0), dot(C, L.row1), dot(C, L.row2));
-        rvec3 Ut = rvec3(dot(U, L.row0), dot(U, L.row1), dot(U, L.row2));
-        rvec3 Vt = rvec3(dot(V, L.row0), dot(V, L.row1), dot(V, L.row2));
+#ifdef AL_DIST_PHONG
+        // Formed first, so that one value, not r, stays live through the ellipse's cones.
+        real bound = al_ltc_phong_tail_bound(c, C, U, V, diffuse);
+#endif
+        rvec3 Ct = al_ltc_image(L, C), Ut = al_ltc_image(L, U), Vt = al_ltc_image(L, V);
         // Minv keeps the orientation where det Minv = c (a - b d) > 0; V's sign restores
         // light/ellipse_cone.glsl's (U x V).C > 0 otherwise (the ellipse is the same).
         if (dot(cross(Ut, Vt), Ct) < AL_R(0.0)) Vt = -Vt;
