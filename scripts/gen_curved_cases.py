@@ -55,7 +55,9 @@ distributions (materials as above, half the microfacet ones with an f0).
            disk's rim, a sphere's or an ellipsoid's silhouette point in the plane
            of n and r (p = 0, n = +z, v = (-0.6, 0, 0.8): r = (0.6, 0, 0.8))
 (a quarter of the disks and polygons two-sided, a tenth of the floor lights facing
-away: 0).
+away: 0). --scenes draws from a list of its own instead, where vn-horizon is vn with
+the light always across the horizon (tests/data/degenerate_edges.cases.json: --scenes
+vertex,vn-horizon).
 
 The same COUNT, SEED and kind give the same file (near: COUNT is ignored, 96
 cases). The oracle: arealight reference --cases OUT.json --out REF.json.
@@ -322,9 +324,15 @@ def extreme_cases(count, seed):
     return cases
 
 
-def degenerate_case(g, index, dist, ltype):
+DEGENERATE_SCENES = ["vn", "vn", "floor", "axisview", "vertex"]
+
+
+def degenerate_case(g, index, dist, ltype, scenes=DEGENERATE_SCENES):
     rng = g.rng
-    scen = rng.choice(["vn", "vn", "floor", "axisview", "vertex"])
+    scen = rng.choice(scenes)
+    across = scen == "vn-horizon"
+    if across:
+        scen = "vn"
     mat = g.material(dist)
     sided = rng.random() < 0.25
     if scen == "vn":
@@ -333,7 +341,7 @@ def degenerate_case(g, index, dist, ltype):
         size = 10 ** rng.uniform(-1.5, 0)
         d = size * 10 ** rng.uniform(0.05, 1.3)
         e1, _ = g.frame(n)
-        if rng.random() < 0.2:  # across the horizon
+        if rng.random() < 0.2 or across:  # across the horizon
             ang = rng.uniform(-0.6, 0.6) * size / d
         else:  # about r = n, up to twice the light's angular size off it
             ang = math.pi / 2 - rng.uniform(0, 2) * size / d
@@ -450,6 +458,10 @@ def main():
     ap.add_argument("--kind", choices=["hard", "lobe-edge", "near", "aimed", "horizon-peak", "extreme",
                                        "degenerate"],
                     default="hard")
+    ap.add_argument("--scenes", default=None,
+                    help="comma-separated scenes of --kind degenerate, drawn evenly (vn, vn-horizon: "
+                    "v = n with the light across the horizon, floor, axisview, vertex; default: "
+                    "vn twice as often as each other, vn-horizon none)")
     ap.add_argument("--lights", default=None,
                     help="comma-separated light types of --kind hard (polygon, disk, sphere, ellipsoid; "
                     "default: the curved three) and degenerate (default: all four)")
@@ -471,7 +483,12 @@ def main():
     elif a.kind == "extreme":
         cases = extreme_cases(a.count, a.seed)
     elif a.kind == "degenerate":
-        cases = cases_in_turn(degenerate_case, a.count, a.seed, lights)
+        scenes = a.scenes.split(",") if a.scenes else DEGENERATE_SCENES
+        bad = [t for t in scenes if t not in ("vn", "vn-horizon", "floor", "axisview", "vertex")]
+        if bad:
+            ap.error("unknown scene %s in --scenes" % ", ".join(bad))
+        cases = cases_in_turn(lambda g, i, d, t: degenerate_case(g, i, d, t, scenes), a.count,
+                              a.seed, lights)
     else:
         cases = near_cases(a.seed)
     with open(a.out, "w") as f:

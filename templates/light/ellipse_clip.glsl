@@ -108,6 +108,7 @@ real al_conic_flux(rvec3 C, rvec3 U, rvec3 V, real psi0, real len, rvec3 n) {
 real al_ellipse_stream(AlCase c, rvec3 n, rvec3 axis, bool clip_axis, real N,
                        AL_INOUT(AlMoments) M) {
     rvec3 C = rvec3(c.center), U = rvec3(c.verts[0]), V = rvec3(c.verts[1]);
+    clip_axis = clip_axis && al_axis_clips(n, axis);  // light/polygon.glsl
     rvec2 cut_n = al_ellipse_cut(C, U, V, n);
     rvec2 cut_a = clip_axis ? al_ellipse_cut(C, U, V, axis) : rvec2(cut_n.x, AL_TWO_PI);
     bool cross_n = cut_n.y > AL_R(0.0) && cut_n.y < AL_TWO_PI;

@@ -65,6 +65,17 @@ bool al_horizon_arc(rvec3 xn, rvec3 en, rvec3 axis, bool clip_axis, AL_INOUT(rve
     return jx || je;
 }
 
+// Whether the axis's hemisphere cuts anything n's does not. Not when the axis is n to
+// within 1e-6 rad (a view exactly along n makes r = n up to rounding): the two horizons are
+// then one circle, and D's arc along it would be streamed twice, once as each (a disc
+// crossing the horizon under v = n: Phong moment 0.046 where the oracle's is 0; rounding
+// the sweeps' total to a whole turn had hidden it). The sliver between two circles that
+// close holds x = axis.w < 1e-6, so x^N drops nothing there.
+bool al_axis_clips(rvec3 n, rvec3 axis) {
+    rvec3 t = cross(n, axis);
+    return dot(t, t) > AL_R(1e-12) || dot(n, axis) < AL_R(0.0);
+}
+
 // (Curved lights shaded along their true boundary have no polygon: AL_MAX_VERTS
 // undefined, and light/ellipse_clip.glsl streams instead.)
 #ifdef AL_MAX_VERTS
@@ -83,6 +94,7 @@ real al_polygon_stream(AlCase c, real side, rvec3 n, rvec3 axis, bool clip_axis,
                        AL_INOUT(AlMoments) M) {
     int count = int(c.params.z);
     rvec3 center = rvec3(c.center);
+    clip_axis = clip_axis && al_axis_clips(n, axis);
     real lit_sum = AL_R(0.0);
     rvec3 xn = rvec3(AL_R(0.0)), en = rvec3(AL_R(0.0));  // leaves / re-enters n's hemisphere
     rvec3 yo = rvec3(AL_R(0.0)), yi = rvec3(AL_R(0.0));  // leaves / re-enters the axis's, on D

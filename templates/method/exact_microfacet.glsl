@@ -300,9 +300,14 @@ void al_moments_arc(AL_INOUT(AlMoments) M, rvec3 a, rvec3 b, rvec3 m, rvec3 axis
     // Centre: where h comes closest to n. Near r the half-vector distance is
     // anisotropic, |dh|^2 ~ (dw.u1)^2 / 4 + (dw.u2)^2 / (4 (n.v)^2): its minimum
     // along the arc's tangent line through the foot of r.
+    // A foot within 1e-4 of 0 (r within that of the arc's pole: the horizon's arc under a
+    // view exactly along n, where h keeps one distance from n along the whole arc) is
+    // rounding's direction, off the arc's plane, and the tangent from it not a unit vector:
+    // a light across the horizon under v = n came out 0 on lavapipe (blinn and beckmann
+    // precision=fp32). There the arc's start serves.
     rvec3 foot = M.r - dot(M.r, m) * m;
     real foot_len = length(foot);
-    rvec3 ws = foot_len > AL_R(1e-12) ? foot / foot_len : a;
+    rvec3 ws = foot_len > AL_R(1e-4) ? foot / foot_len : a;
     rvec3 ts = cross(m, ws);
     real l2 = AL_R(1.0) / max(M.nv * M.nv, AL_R(1e-12));
     rvec3 dd = ws - M.r;

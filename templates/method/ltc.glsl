@@ -498,6 +498,13 @@ rvec3 al_ltc_image(AlLtc L, rvec3 w) {
 
 #ifndef AL_LIGHT_CURVED
 #ifndef AL_HORIZON_PROXY
+// |nu.x| below which n's horizon and the LTC's z = 0 count as one plane (al_ltc_horizon_arc):
+// above the rounding of the arc's ends' z (~1e-7 in fp32, ~1e-3 in fp16).
+#ifdef AL_PRECISION_FP16
+#define AL_LTC_FLAT hreal(1e-2)
+#else
+#define AL_LTC_FLAT hreal(1e-4)
+#endif
 // horizon=clip integrates the light clipped to n's hemisphere, not only to the LTC's own
 // z >= 0: the lobe's true integrand (f (n.w))+ vanishes below n's horizon, and the tables
 // are normalised to the LTC's mass above it (I_H, al_ltc_upper_integral), but the LTC's
@@ -522,6 +529,13 @@ void al_ltc_horizon_arc(AlLtc L, rvec3 lx, rvec3 le, AL_INOUT(AlLtcSum) s, real 
     // the segment a-b would pass by the origin as the arc nears pi).
     hvec3 y = hvec3(hreal(0.0), hreal(1.0), hreal(0.0));
     hvec3 q = dot(cross(a, y), nu) >= hreal(0.0) ? y : -y;
+    // But the two planes coincide where the lobe is symmetric about n (d = 0: a view exactly
+    // along n), and the arc then lies on z = 0 whole, its ends' signs rounding's: +-y, a
+    // quarter turn off the arc, left the boundary open (a small light across the horizon
+    // under v = n: GGX specular 0.37 where the oracle's is 1.5e-9). Within AL_LTC_FLAT of that,
+    // the crossing is interpolated between the ends as al_ltc_clip_edge's (a point of the
+    // arc, and the same rounding decided which side the neighbouring edges' ends are on).
+    if (abs(nu.x) < AL_LTC_FLAT && ia != ib) q = AL_LTC_UNIT((a.z * b - b.z * a) / (a.z - b.z));
     hvec3 a0 = ia ? a : q, b0 = ib ? b : q;
     hvec3 m = nu * max(dot(cross(a0, b0), nu), hreal(0.0));
     s.ff += m * al_edge_factor(dot(a0, b0), m);

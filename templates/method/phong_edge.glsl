@@ -4,29 +4,13 @@
 // method/exact_phong.glsl: m the arc's inward unit normal, s = |r.m|,
 // c = sqrt(1 - s^2), tau the arc angle from the foot of r, x = r.u = c cos(tau).
 
-// One arc's share of the boundary sums. The azimuth swept about r is not here:
-// the driver forms it from per-vertex azimuths, so that its signed total is
-// exactly 2 pi times the winding number and rounding cancels between the arcs
-// that share a vertex.
+// One arc's share of the boundary sums. The azimuth swept about r is not here: the
+// drivers form it (method/phong_boundary.glsl, method/peak_microfacet.glsl).
 struct AlLobeEdge {
     rvec3 sums;  // far: (r.m) T_(N+1), (r.m) T_N; near: -(r.m) int G_(N+1), -(r.m) int G_N;
                  // z: (n.m) int x^N dtau. Then T_k = [near] sweep + sums.
     bool near_edge;
 };
-
-// An azimuth difference wrapped into [-pi, pi], counting the wraps: their signed
-// total is the winding number of the closed boundary about the axis.
-real al_wrap_sweep(real sweep, AL_INOUT(real) wraps) {
-    if (sweep > AL_PI) {
-        wraps += AL_R(1.0);
-        return sweep - AL_TWO_PI;
-    }
-    if (sweep < -AL_PI) {
-        wraps -= AL_R(1.0);
-        return sweep + AL_TWO_PI;
-    }
-    return sweep;
-}
 
 struct AlEdgeFrame {
     real rm, s, c;   // r.m, |r.m|, sqrt(1 - s^2)

@@ -8,8 +8,8 @@
 // The shading library of CONTRACT.md 5: include it in any stage. Names outside
 // the contract's are prefixed al_<light>_<dist>_ (AL_..., Al...) so that they
 // cannot collide with a renderer's or another arealight library's.
-#ifndef AREALIGHT_LIBRARY_3D659556841D90D2
-#define AREALIGHT_LIBRARY_3D659556841D90D2 1
+#ifndef AREALIGHT_LIBRARY_F5F014DCA0981818
+#define AREALIGHT_LIBRARY_F5F014DCA0981818 1
 #extension GL_GOOGLE_cpp_style_line_directive : enable
 #extension GL_EXT_control_flow_attributes : enable
 #line 1 "templates/library/types.glsl"
@@ -459,6 +459,17 @@ bool al_polygon_phong_horizon_arc(al_polygon_phong_rvec3 al_polygon_phong_xn, al
     return al_polygon_phong_jx || al_polygon_phong_je;
 }
 
+// Whether the axis's hemisphere cuts anything n's does not. Not when the axis is n to
+// within 1e-6 rad (a view exactly along n makes r = n up to rounding): the two horizons are
+// then one circle, and D's arc along it would be streamed twice, once as each (a disc
+// crossing the horizon under v = n: Phong moment 0.046 where the oracle's is 0; rounding
+// the sweeps' total to a whole turn had hidden it). The sliver between two circles that
+// close holds x = axis.w < 1e-6, so x^N drops nothing there.
+bool al_polygon_phong_axis_clips(al_polygon_phong_rvec3 n, al_polygon_phong_rvec3 al_polygon_phong_axis) {
+    al_polygon_phong_rvec3 al_polygon_phong_t = cross(n, al_polygon_phong_axis);
+    return dot(al_polygon_phong_t, al_polygon_phong_t) > 1e-12f || dot(n, al_polygon_phong_axis) < 0.0f;
+}
+
 // (Curved lights shaded along their true boundary have no polygon: AL_MAX_VERTS
 // undefined, and light/ellipse_clip.glsl streams instead.)
 #ifdef AL_POLYGON_PHONG_MAX_VERTS
@@ -477,6 +488,7 @@ al_polygon_phong_real al_polygon_phong_polygon_stream(AlPolygonPhongCase al_poly
                        AL_POLYGON_PHONG_INOUT(AlPolygonPhongMoments) al_polygon_phong_M) {
     int al_polygon_phong_count = int(al_polygon_phong_c.al_polygon_phong_params.z);
     al_polygon_phong_rvec3 al_polygon_phong_center = al_polygon_phong_rvec3(al_polygon_phong_c.al_polygon_phong_center);
+    al_polygon_phong_clip_axis = al_polygon_phong_clip_axis && al_polygon_phong_axis_clips(n, al_polygon_phong_axis);
     al_polygon_phong_real al_polygon_phong_lit_sum = 0.0f;
     al_polygon_phong_rvec3 al_polygon_phong_xn = al_polygon_phong_rvec3(0.0f), al_polygon_phong_en = al_polygon_phong_rvec3(0.0f);  // leaves / re-enters n's hemisphere
     al_polygon_phong_rvec3 al_polygon_phong_yo = al_polygon_phong_rvec3(0.0f), al_polygon_phong_yi = al_polygon_phong_rvec3(0.0f);  // leaves / re-enters the axis's, on D
@@ -561,7 +573,7 @@ al_polygon_phong_rvec2 al_polygon_phong_polygon_moments(AlPolygonPhongCase al_po
 #endif
 #endif
 #endif
-#line 565 "arealight-generated"
+#line 577 "arealight-generated"
 #line 1 "templates/light/polygon_methods.glsl"
 // Shading of polygon lights (CONTRACT.md 2) by each method: the point-light
 // baseline, or clipping (light/polygon.glsl) and the method's boundary moments.
@@ -679,7 +691,7 @@ vec4 al_polygon_phong_shade(AlPolygonPhongCase al_polygon_phong_c) {
     return vec4(diffuse, specular, al_polygon_phong_sm.y, 0.0f);
 }
 #endif
-#line 683 "arealight-generated"
+#line 695 "arealight-generated"
 #line 1 "templates/library/polygon.glsl"
 // The library entry for polygon lights (CONTRACT.md 5): the renderer's fp32 values,
 // in any consistent space, turned into the record the methods work on, in the
@@ -731,7 +743,7 @@ AlPolygonPhongCase al_polygon_phong_polygon_record(ArealightSurface al_polygon_p
 vec4 al_polygon_phong_polygon_evaluate(ArealightSurface al_polygon_phong_s, vec3 al_polygon_phong_vertices[8], int al_polygon_phong_count, bool al_polygon_phong_two_sided) {
     return al_polygon_phong_clean(al_polygon_phong_shade(al_polygon_phong_polygon_record(al_polygon_phong_s, al_polygon_phong_vertices, al_polygon_phong_count, al_polygon_phong_two_sided)));
 }
-#line 735 "arealight-generated"
+#line 747 "arealight-generated"
 // arealight_polygon_phong: variant dist=phong,method=point,light=polygon,verts=4.
 // Domain: p, n, v, the light in one space, fp32 (n, v any length); convex planar polygon, counter-clockwise seen from its emitting side, count in [3, AL_MAX_VERTS] (more are cut to the first AL_MAX_VERTS); s.param the exponent N in [1, 1e5]; s.f0 in [0, 1] (ignored).
 // Returns diffuse and specular of CONTRACT.md 2 for unit radiance: finite, >= 0.
@@ -744,7 +756,7 @@ ArealightShading arealight_polygon_phong(ArealightSurface al_polygon_phong_s, ve
     return al_polygon_phong_result;
 }
 #define AREALIGHT_HAS_POLYGON_PHONG 1
-#endif  // AREALIGHT_LIBRARY_3D659556841D90D2
+#endif  // AREALIGHT_LIBRARY_F5F014DCA0981818
 #define AL_KERNEL_SHADE arealight_polygon_phong
 #define AL_KERNEL_EVALUATE al_polygon_phong_polygon_evaluate
 #define AL_KERNEL_ARGS vertices, count, two_sided
@@ -801,4 +813,4 @@ void main() {
 #endif
     al_results[i] = result;
 }
-#line 805 "arealight-generated"
+#line 817 "arealight-generated"
