@@ -23,10 +23,11 @@
 // clipping and the proxy in half precision (hreal), after the transform in fp32.
 // table=fit (GGX) evaluates the coefficients in closed form (templates/method/ltc_ggx_fit.glsl,
 // al_ltc_fit_lookup) and the proxy by Snyder's formula: no texture, no sampler.
-// GPU cost (navi21, `arealight gpu-cost`, the validation kernel): GGX polygon default
-// 1 073 (2.15x its point light's 498; 3 008 instructions, 96 VGPRs); table=fit 2 000
-// (4.02x; 3 882 instructions). The two-lobe tables' second edge sum: blinn / beckmann /
-// phong polygon 1 193 / 1 189 / 1 191 (2.08x / 2.15x / 2.61x; one lobe, before the albedo
+// GPU cost (navi21, `arealight gpu-cost`, the validation kernel; with the flat horizon's
+// crossing, al_ltc_horizon_arc, 2026-12-07): GGX polygon default 1 078 (2.16x its point
+// light's 498; 3 024 instructions, 96 VGPRs); table=fit 2 005 (4.03x; 3 898 instructions).
+// The two-lobe tables' second edge sum: blinn / beckmann / phong polygon 1 203 / 1 200 /
+// 1 201 (2.10x / 2.17x / 2.63x; one lobe, before the albedo
 // ceiling and the clip to n's horizon, 949 / 945 / 947); their disk, sphere and ellipsoid
 // +29-31% with horizon=clip, +19-21% with proxy (before the clip to n's horizon).
 

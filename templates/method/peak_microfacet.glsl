@@ -20,9 +20,10 @@
 //
 // GPU cost (navi21, `arealight gpu-cost`, the validation kernel, polygon, against the
 // point light's 498-573; with AL_FAST_ARC, common/common.glsl, the one-lobe loop unrolled,
-// each arc's shared terms once, GGX's spread factor and the fits' one fixed-point step,
-// 2026-12-06): lorentz 15 467 / 15 473 / 20 377 (blinn / beckmann / ggx; 27-41x), pearson
-// 17 425 / 17 431 / 24 293 (30-48.8x), ellipsoid 17 486 / 17 492 / 24 414 (30-49.0x).
+// each arc's shared terms once, GGX's spread factor and the fits' one fixed-point step, and
+// each chord's sweep from its own frame, 2026-12-07): lorentz 15 062 / 15 055 / 19 965
+// (blinn / beckmann / ggx; 26-40x), pearson 17 020 / 17 013 / 23 881 (29.7-48.0x),
+// ellipsoid 17 035 / 17 028 / 23 911 (29.7-48.0x).
 //
 // The paper's formulas, checked numerically (the copy we read garbles some):
 // - eq. 23: int D_Blinn dh = (N+2)/(2 pi) int (n.h)^N dh = (N+2)/(N+1) mu_N. As printed.
