@@ -531,16 +531,11 @@ real al_pmf_g2_hv(AlMoments M, real hv, real nh) {
 // W = G2(w*, v) (h*.v)/(n.v) F(h*.v) at one representative half vector h* (GGX: its mean
 // over four points about h*).
 rvec2 al_mf_end(AlMoments M) {
-    // The sweeps total 2 pi times the winding number about n, but for n exactly on the
-    // h-polygon's boundary (al_pmf_h_arc); there the far sweeps alone are the winding
-    // (method/phong_boundary.glsl's al_moments_end, whose tolerance this is).
-    real turns = floor(M.sweep_all / AL_TWO_PI + AL_R(0.5));
-    bool whole = abs(M.sweep_all - AL_TWO_PI * turns) < AL_R(1e-3);
     real ndf = M.mix.c0 * M.omega_h / AL_PI;
     for (int j = 0; j < AL_PMF_LOBES; ++j) {
         real size_near = M.size_all - M.size_far[j], sweep_near = M.sweep_all - M.sweep_far[j];
-        real winding = whole && size_near <= M.size_far[j] ? AL_TWO_PI * turns - sweep_near
-                                                           : M.sweep_far[j];
+        real winding = al_winding(M.sweep_all, sweep_near, M.sweep_far[j], size_near,
+                                  M.size_far[j]);  // about n (method/phong_edge.glsl)
         real N = M.mix.N[j];
         // w_j (N+2)/(2 pi) int (n.h)^N dh: (N+1)/(2 pi) int = (winding - sums) / (2 pi).
         ndf += M.mix.w[j] * (N + AL_R(2.0)) / AL_TWO_PI *
@@ -549,7 +544,7 @@ rvec2 al_mf_end(AlMoments M) {
     ndf = max(ndf, AL_R(0.0));
     if (!M.specular_on) return rvec2(AL_R(0.0), ndf);
     // n inside the h-polygon (its sweeps total 2 pi): h* = n.
-    bool n_inside = abs(turns) > AL_R(0.5);
+    bool n_inside = abs(M.sweep_all) > AL_PI;
     rvec3 hs = n_inside ? M.n : M.h_close;
 #ifdef AL_FACTOR_BLEND
     // The blend's weight of the lobe's point against the light's (header: factor).

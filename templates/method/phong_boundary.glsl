@@ -50,19 +50,9 @@ void al_moments_arc(AL_INOUT(AlMoments) M, rvec3 a, rvec3 b, rvec3 m, rvec3 r, r
 // double-axis moment: x = (N+2)/(2 pi) int (r.w)^N (n.w), y = (N+1)/(2 pi) int (r.w)^N.
 // Domain: real N in [1, 1e5]; error that of the method's edge integrals.
 rvec2 al_moments_end(AlMoments M, rvec3 r, rvec3 n, real N) {
-    // The sweeps total 2 pi times the winding number about r (0 or 1 for a convex D), so
-    // that multiple of 2 pi less the near sweeps equals the far sweeps. Take whichever
-    // group cancels less. But with r exactly on a vertex of D (a view straight along a
-    // corner: r = a to the bit), both arcs at it sweep atan2(0, 0) = 0, and the total is
-    // D's angle there, not a multiple of 2 pi; those arcs are near ones (x = 1 at r) and
-    // their terms vanish with r.m, so the far sweeps alone are the winding: the angle, and
-    // the moment angle / (2 pi) for a narrow lobe (rounded to a multiple, it had been 0).
-    // Rounding leaves the total within a few ulp of pi per arc of a multiple otherwise.
-    real total = M.sweep_near + M.sweep_far;
-    real turns = floor(total / AL_TWO_PI + AL_R(0.5));
-    bool whole = abs(total - AL_TWO_PI * turns) < AL_R(1e-4);
-    real winding = whole && M.size_near <= M.size_far ? AL_TWO_PI * turns - M.sweep_near
-                                                       : M.sweep_far;
+    // The winding number about r is 0 or 1 for a convex D (method/phong_edge.glsl).
+    real winding = al_winding(M.sweep_near + M.sweep_far, M.sweep_near, M.sweep_far,
+                              M.size_near, M.size_far);
     real moment = (winding - M.sums.x) / AL_TWO_PI;
     real specular = (dot(r, n) * (winding - M.sums.y) + M.sums.z) / AL_TWO_PI;
     return rvec2(specular, moment);
