@@ -1,5 +1,7 @@
 #include "arealight/evaluator.hpp"
 
+#include <fmt/format.h>
+
 #include <chrono>
 #include <cmath>
 #include <exception>
@@ -8,6 +10,7 @@
 #include "arealight/compiler.hpp"
 #include "arealight/cpu_mirror.hpp"
 #include "arealight/generator.hpp"
+#include "arealight/spirv_cache.hpp"
 #include "arealight/vulkan_runner.hpp"
 
 namespace arealight {
@@ -116,21 +119,38 @@ std::optional<std::vector<uint32_t>> build_spirv(const Variant& v, const std::st
     return compile_shader(glsl, name + ".comp", opt, prefixed);
 }
 
-std::optional<std::vector<uint32_t>> build_hlsl_spirv(const Variant& v, bool optimize,
-                                                      const DiagnosticConsumer& diag,
-                                                      KernelOutputs outputs) {
+namespace {
+
+// The HLSL kernel text (generate_hlsl_kernel) of an fp32 variant through glslang's HLSL
+// front end, legalized and optionally optimized.
+// False, with the diagnostic, for a variant the HLSL library does not hold.
+bool hlsl_supports(const Variant& v, const DiagnosticConsumer& diag) {
+    if (language_supports(Language::Hlsl, v)) return true;
+    prefixed_consumer("variant " + canonical_name(v) + " (HLSL): ", diag)(
+        {Severity::Error, "", 0,
+         "the HLSL library is fp32 only: this variant computes at " +
+             std::string(to_string(effective_precision(v)))});
+    return false;
+}
+
+std::optional<std::vector<uint32_t>> compile_hlsl_kernel(const Variant& v, const std::string& hlsl,
+                                                         bool optimize,
+                                                         const DiagnosticConsumer& diag) {
     const std::string name = canonical_name(v);
     const DiagnosticConsumer prefixed = prefixed_consumer("variant " + name + " (HLSL): ", diag);
-    if (!language_supports(Language::Hlsl, v)) {
-        prefixed({Severity::Error, "", 0,
-                  "the HLSL library is fp32 only: this variant computes at " +
-                      std::string(to_string(effective_precision(v)))});
-        return std::nullopt;
-    }
     CompileOptions opt;
     opt.optimize = optimize;
     opt.language = SourceLanguage::Hlsl;
-    return compile_shader(generate_hlsl_kernel(v, outputs), name + ".comp.hlsl", opt, prefixed);
+    return compile_shader(hlsl, name + ".comp.hlsl", opt, prefixed);
+}
+
+}  // namespace
+
+std::optional<std::vector<uint32_t>> build_hlsl_spirv(const Variant& v, bool optimize,
+                                                      const DiagnosticConsumer& diag,
+                                                      KernelOutputs outputs) {
+    if (!hlsl_supports(v, diag)) return std::nullopt;
+    return compile_hlsl_kernel(v, generate_hlsl_kernel(v, outputs), optimize, diag);
 }
 
 struct Evaluator::Impl {
@@ -193,9 +213,20 @@ bool Evaluator::run_packed(const Variant& v, const std::vector<float>& packed, s
     const auto key = std::make_pair(name, outputs);
     auto it = impl_->spirv.find(key);
     if (it == impl_->spirv.end()) {
-        auto words = impl_->opt.language == Language::Hlsl
-                         ? build_hlsl_spirv(v, impl_->opt.optimize, diag, outputs)
-                         : build_spirv(v, impl_->opt.optimize, diag, outputs);
+        // The kernel's text, compiled or read from the cache folder by that text.
+        const bool hlsl = impl_->opt.language == Language::Hlsl;
+        const bool optimize = impl_->opt.optimize;
+        if (hlsl && !hlsl_supports(v, diag)) return false;
+        const std::string source = hlsl ? generate_hlsl_kernel(v, outputs)
+                                        : generate_source(v, Language::Glsl, outputs);
+        auto words = cached_compile(
+            impl_->opt.spirv_cache,
+            fmt::format("{} kernel, optimize {}, {}", hlsl ? "hlsl" : "glsl", optimize,
+                        compiler_versions()),
+            source, [&] {
+                return hlsl ? compile_hlsl_kernel(v, source, optimize, diag)
+                            : build_spirv(v, source, optimize, diag);
+            });
         if (!words) return false;
         it = impl_->spirv.emplace(key, std::move(*words)).first;
     }

@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <memory>
 #include <optional>
@@ -16,12 +17,20 @@
 
 namespace arealight::test {
 
+// AREALIGHT_SPIRV_CACHE: the folder of compiled kernels the suite's processes share
+// (spirv_cache.hpp; scripts/test.sh sets it). Unset: each process compiles its own.
+inline std::string spirv_cache_folder() {
+    const char* dir = std::getenv("AREALIGHT_SPIRV_CACHE");
+    return dir ? dir : "";
+}
+
 inline Evaluator& evaluator(Backend b) {
     static std::map<Backend, std::unique_ptr<Evaluator>> cache;
     auto& e = cache[b];
     if (!e) {
         EvalOptions opt;
         opt.backend = b;
+        opt.spirv_cache = spirv_cache_folder();
         std::string why;
         e = Evaluator::create(opt, [&](const Diagnostic& d) { why += d.message; });
         INFO(why);

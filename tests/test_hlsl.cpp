@@ -91,6 +91,7 @@ Evaluator& hlsl_evaluator() {
     static std::unique_ptr<Evaluator> e = [] {
         EvalOptions opt;
         opt.language = Language::Hlsl;
+        opt.spirv_cache = spirv_cache_folder();
         std::string why;
         auto made = Evaluator::create(opt, [&](const Diagnostic& d) { why += d.message; });
         INFO(why);

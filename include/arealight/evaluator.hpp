@@ -40,6 +40,9 @@ struct EvalOptions {
     // Vulkan: the kernel around the GLSL library, or the HLSL kernel around the HLSL
     // library (generate_hlsl_kernel; fp32 variants, language_supports).
     Language language = Language::Glsl;
+    // Vulkan: a folder of compiled kernels shared by processes (spirv_cache.hpp); empty:
+    // compile each kernel once per evaluator. The test suite's AREALIGHT_SPIRV_CACHE.
+    std::string spirv_cache;
 };
 
 struct EvalStats {
