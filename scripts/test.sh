@@ -25,6 +25,11 @@ export GALLIVM_PERF="${GALLIVM_PERF:-nopt}"
 # it takes milliseconds at any level (ggx exact polygon over the typical set: 0.09 s at -O0,
 # 0.03 s at -O3), against about half a second of lavapipe per variant.
 export MIRROR_FLAGS="${MIRROR_FLAGS:--O0}"
+# The Release tree's libraries and command line at -O1, the numeric ones (the oracle, the
+# fitter, the renderer) at -O2: the tests spend their time in lavapipe, glslang and the
+# oracle, and -O3 doubled some files' compile time (runtime/report.cpp 28.8 s -> 15.4 s at -O1).
+export RELEASE_FLAGS="${RELEASE_FLAGS:--O1 -DNDEBUG}"
+export NUMERIC_FLAGS="${NUMERIC_FLAGS:--O2}"
 # One folder of compiled kernels for every test process of this run, both trees
 # (include/arealight/spirv_cache.hpp): ctest starts a process per test case, and most of
 # them compile variants an earlier one compiled (the HLSL-against-GLSL test: 147 s -> 101 s
@@ -44,6 +49,14 @@ else
   step build bash scripts/build.sh arealight arealight_tests
 fi
 plain_only=$(grep -v '^#' scripts/plain_only_tests.txt | grep -v '^$' | paste -sd'|')
+# Each line must still name a test: a renamed test would otherwise leave the list silently
+# and run under ASan at several times its plain cost (the LTC Fresnel test did, 25 s).
+while read -r pattern; do
+  if ctest --test-dir build -N -R "$pattern" | grep -q '^Total Tests: 0$'; then
+    echo "test.sh: scripts/plain_only_tests.txt: '$pattern' matches no test" >&2
+    exit 1
+  fi
+done < <(grep -v '^#' scripts/plain_only_tests.txt | grep -v '^$')
 if [ "${PLAIN_ALL:-0}" = 1 ]; then plain_args=(); else plain_args=(-R "$plain_only"); fi
 # The two all-variant runs first and alone: they compile every listed variant on lavapipe,
 # whose shader cache the other tests (the HLSL-against-GLSL kernels: 218 s with a cold cache,
