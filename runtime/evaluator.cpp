@@ -121,8 +121,6 @@ std::optional<std::vector<uint32_t>> build_spirv(const Variant& v, const std::st
 
 namespace {
 
-// The HLSL kernel text (generate_hlsl_kernel) of an fp32 variant through glslang's HLSL
-// front end, legalized and optionally optimized.
 // False, with the diagnostic, for a variant the HLSL library does not hold.
 bool hlsl_supports(const Variant& v, const DiagnosticConsumer& diag) {
     if (language_supports(Language::Hlsl, v)) return true;
@@ -133,6 +131,8 @@ bool hlsl_supports(const Variant& v, const DiagnosticConsumer& diag) {
     return false;
 }
 
+// The HLSL kernel text (generate_hlsl_kernel) of an fp32 variant through glslang's HLSL
+// front end, legalized and optionally optimized.
 std::optional<std::vector<uint32_t>> compile_hlsl_kernel(const Variant& v, const std::string& hlsl,
                                                          bool optimize,
                                                          const DiagnosticConsumer& diag) {
