@@ -40,35 +40,6 @@ std::string make_escaped(const std::string& path) {
 
 }  // namespace
 
-CLI::App* add_compile_command(CLI::App& app, CompileArgs& args) {
-    auto* cmd = app.add_subcommand(
-        "compile",
-        "Compile a GLSL or HLSL shader that may #include arealight libraries to validated, "
-        "optimized SPIR-V (Vulkan 1.1, SPIR-V 1.3 unless --target-env says otherwise). GLSL's "
-        "stage comes from the extension (.vert .tesc .tese .geom .frag .comp); a .hlsl file "
-        "is HLSL (glslang's HLSL front end, then SPIRV-Tools' legalization), its stage from "
-        "the extension before .hlsl (x.frag.hlsl) or --stage, its entry function -E. "
-        "#include \"name\" is searched beside the including file, then in each -I folder; "
-        "no #extension line is needed. Nothing is written on error");
-    cmd->add_option("shader", args.shader, "GLSL or HLSL (.hlsl) source file")->required();
-    cmd->add_option("-o,--out", args.out, "SPIR-V file to write")->required();
-    cmd->add_option("-I,--include-dir", args.include_dirs, "include folder (repeatable, in order)");
-    cmd->add_option("--stage", args.stage, "stage when the extension does not say it")
-        ->check(CLI::IsMember({"vert", "tesc", "tese", "geom", "frag", "comp"}));
-    cmd->add_option("--depfile", args.depfile,
-                    "also write a Makefile rule: OUT depends on SHADER and every included file "
-                    "(CMake's DEPFILE, ninja's depfile)");
-    cmd->add_option("-E,--entry", args.entry,
-                    "HLSL: the entry function (default main); the module's entry point is "
-                    "named main");
-    cmd->add_option("--target-env", args.target_env,
-                    "Vulkan version the SPIR-V is for: vulkan1.0 (SPIR-V 1.0), vulkan1.1 (1.3, "
-                    "the default), vulkan1.2 (1.5), vulkan1.3 (1.6)")
-        ->check(CLI::IsMember({"vulkan1.0", "vulkan1.1", "vulkan1.2", "vulkan1.3"}));
-    cmd->add_flag("--no-opt", args.no_opt, "skip the SPIRV-Tools performance passes");
-    return cmd;
-}
-
 int run_compile(const CompileArgs& args) {
     CompileOptions options;
     options.optimize = !args.no_opt;

@@ -1,9 +1,7 @@
 // `arealight compile`: a small glslc for shaders that #include arealight libraries (glslang +
-// SPIRV-Tools in process). Hooked into cli/main.cpp with add_compile_command before parsing and
-// run_compile when the subcommand was parsed.
+// SPIRV-Tools in process). Its options are in cli/main.cpp, which calls run_compile.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
 
@@ -19,8 +17,6 @@ struct CompileArgs {
     std::string target_env;  // empty: vulkan1.1
     bool no_opt = false;
 };
-
-CLI::App* add_compile_command(CLI::App& app, CompileArgs& args);
 
 // Exit codes as cli/main.cpp: 0 ok, 1 unreadable shader or compile error, 2 no stage for the
 // extension, 3 write failure.

@@ -23,25 +23,6 @@ Distribution distribution_of(const std::string& s) {
 
 }  // namespace
 
-CLI::App* add_fit_ltc_command(CLI::App& app, FitLtcArgs& args) {
-    auto* cmd = app.add_subcommand(
-        "fit-ltc",
-        "Fit a distribution's linearly transformed cosines table (data/ltc/ltc_DIST.txt): "
-        "Nelder-Mead per (roughness, view) cell, each from its neighbour's solution");
-    cmd->add_option("--dist", args.dist, "phong, blinn, beckmann or ggx")
-        ->required()
-        ->check(CLI::IsMember({"phong", "blinn", "beckmann", "ggx"}));
-    cmd->add_option("--size", args.size, "cells per axis")
-        ->check(CLI::Range(2, 1024))
-        ->capture_default_str();
-    cmd->add_option("--threads", args.threads,
-                    "worker threads (0: all cores); the table does not depend on it")
-        ->check(CLI::Range(0u, 256u))
-        ->capture_default_str();
-    cmd->add_option("--out", args.out, "table file to write")->required();
-    return cmd;
-}
-
 int run_fit_ltc(const FitLtcArgs& args) {
     const Distribution d = distribution_of(args.dist);
     LtcFitOptions opt;

@@ -71,38 +71,6 @@ int write_library(const std::vector<Variant>& variants, const GenerateArgs& args
 
 }  // namespace
 
-CLI::App* add_generate_command(CLI::App& app, GenerateArgs& args) {
-    auto* cmd = app.add_subcommand(
-        "generate",
-        "Write a variant's validation kernel (GLSL and/or SPIR-V; GLSL on stdout when no file "
-        "is given), or with --library the includable shading library of CONTRACT.md 5");
-    auto* variant = cmd->add_option("--variant", args.variants,
-                                     "variant name (repeatable with --library: one per light "
-                                     "type and distribution)");
-    cmd->add_option("--scene", args.scene,
-                    "with --library: the variants an arealight-scene/1 file needs (CONTRACT.md "
-                    "7), each the cheapest that meets its quality by the measured data built in")
-        ->excludes(variant);
-    cmd->add_option("--glsl", args.glsl, "kernel GLSL file to write (one variant)");
-    cmd->add_option("--hlsl", args.hlsl,
-                    "the HLSL validation kernel to write (one fp32 variant): the HLSL library "
-                    "around templates/library/kernel.hlsl");
-    cmd->add_option("--spv", args.spv, "kernel SPIR-V file to write (one variant)");
-    cmd->add_option("--library", args.library,
-                    "write the shading library (GLSL or, with --lang hlsl, HLSL to #include, "
-                    "CONTRACT.md 5) here");
-    cmd->add_option("--lang", args.lang,
-                    "the library's language: glsl (4.50; also GLSL ES 3.10) or hlsl (Shader "
-                    "Model 6 syntax, fp32 variants)")
-        ->check(CLI::IsMember({"glsl", "hlsl"}))
-        ->capture_default_str();
-    cmd->add_option("--tables", args.tables,
-                    "with --library: write the tables its samplers read, and tables.json, "
-                    "into this folder");
-    cmd->add_flag("--no-opt", args.no_opt, "skip the SPIRV-Tools performance passes");
-    return cmd;
-}
-
 int run_generate(const GenerateArgs& args, const DiagnosticConsumer& diag) {
     auto usage = [&](const std::string& message) {
         if (diag) diag({Severity::Error, "", 0, "generate: " + message});

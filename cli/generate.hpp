@@ -1,10 +1,8 @@
 // `arealight generate`: a variant's validation kernel (GLSL and/or SPIR-V), or the
 // shading library of CONTRACT.md 5 for one or more variants (--library), with the
-// tables it samples (--tables). Hooked into cli/main.cpp with add_generate_command
-// before parsing and run_generate when the subcommand was parsed.
+// tables it samples (--tables). Its options are in cli/main.cpp, which calls run_generate.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
 
@@ -19,8 +17,6 @@ struct GenerateArgs {
     std::string lang = "glsl";  // the library's language
     bool no_opt = false;
 };
-
-CLI::App* add_generate_command(CLI::App& app, GenerateArgs& args);
 
 // Exit codes as cli/main.cpp: 0 ok, 1 bad input (unknown variant, two variants of one
 // light and distribution), 2 usage, 3 compile or write failure.

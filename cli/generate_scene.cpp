@@ -7,16 +7,6 @@
 
 namespace arealight::cli {
 
-CLI::App* add_scene_variants_command(CLI::App& app, SceneVariantsArgs& args) {
-    auto* cmd = app.add_subcommand(
-        "scene-variants",
-        "List the variants a scene (arealight-scene/1) needs: one per light type and "
-        "distribution, the cheapest meeting its quality by the measured data built in "
-        "(data/quality/measured.json), specialised to its sidedness and largest polygon");
-    cmd->add_option("--scene", args.scene, "scene file")->required();
-    return cmd;
-}
-
 int run_scene_variants(const SceneVariantsArgs& args) {
     const auto scene = read_scene(args.scene, print_diagnostic);
     if (!scene) return 1;

@@ -1,10 +1,9 @@
 // Scenes on the command line (CONTRACT.md 7): `arealight scene-variants --scene FILE`
 // prints the variants a scene's library is made of, one name per line, with why each
 // was chosen on stderr (`generate --scene`, in cli/generate.cpp, writes their library).
-// Hooked into cli/main.cpp like cli/fit_ltc.hpp.
+// Its options are in cli/main.cpp, which calls run_scene_variants.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <string>
 
 namespace arealight::cli {
@@ -12,8 +11,6 @@ namespace arealight::cli {
 struct SceneVariantsArgs {
     std::string scene;
 };
-
-CLI::App* add_scene_variants_command(CLI::App& app, SceneVariantsArgs& args);
 
 // 0 ok, 1 a malformed scene or nothing to select for it.
 int run_scene_variants(const SceneVariantsArgs& args);

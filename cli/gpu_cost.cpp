@@ -7,24 +7,9 @@
 #include "arealight/gpu_cost_json.hpp"
 #include "arealight/read_file.hpp"
 #include "arealight/variant.hpp"
-#include "gpu_family.hpp"
 #include "print_diagnostic.hpp"
 
 namespace arealight::cli {
-
-CLI::App* add_gpu_cost_command(CLI::App& app, GpuCostArgs& args) {
-    auto* cmd = app.add_subcommand(
-        "gpu-cost",
-        "Print the GPU cost (RADV/ACO on a null device, CONTRACT.md 4) of variants' kernels "
-        "as `generate --spv` writes them, with their ratio to the point light, or of SPIR-V "
-        "files: one JSON line each");
-    cmd->add_option("--variant", args.variants, "variant name (repeatable)");
-    cmd->add_option("--spv", args.spv, "SPIR-V compute module (repeatable)")
-        ->check(CLI::ExistingFile);
-    add_gpu_family_option(cmd, args.gpu_family);
-    add_gpu_cache_option(cmd, args.gpu_cache);
-    return cmd;
-}
 
 int run_gpu_cost(const GpuCostArgs& args) {
     if (args.variants.empty() && args.spv.empty()) {

@@ -2,7 +2,6 @@
 // one JSON line each, for checking a figure against shared/tools/radvstats by hand.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
 
@@ -15,8 +14,6 @@ struct GpuCostArgs {
     std::string gpu_family = GpuCostOptions{}.family;
     std::string gpu_cache;  // --gpu-cache / AREALIGHT_GPU_CACHE
 };
-
-CLI::App* add_gpu_cost_command(CLI::App& app, GpuCostArgs& args);
 
 // 0 ok, 1 an unknown variant or unreadable file, 2 neither --variant nor --spv, 3 RADV
 // missing or a module it fails on.

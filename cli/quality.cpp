@@ -5,27 +5,10 @@
 #include "arealight/atomic_file.hpp"
 #include "arealight/quality.hpp"
 #include "arealight/variant.hpp"
-#include "gpu_family.hpp"
 #include "print_diagnostic.hpp"
 #include "progress.hpp"
 
 namespace arealight::cli {
-
-CLI::App* add_quality_command(CLI::App& app, QualityArgs& args) {
-    auto* cmd = app.add_subcommand(
-        "quality",
-        "Collect the measured error and cost of every variant in report JSON files into the "
-        "quality data scene selection ranks by (arealight-quality/1; a variant in several "
-        "reports takes the last one's row)");
-    cmd->add_option("--report", args.reports, "report.json of `arealight report` (repeatable)")
-        ->required()
-        ->check(CLI::ExistingFile);
-    cmd->add_option("--out", args.out, "quality file to write (data/quality/measured.json)")
-        ->required();
-    add_gpu_family_option(cmd, args.gpu_family);
-    add_gpu_cache_option(cmd, args.gpu_cache);
-    return cmd;
-}
 
 int run_quality(const QualityArgs& args) {
     auto data = quality_from_reports(args.reports, print_diagnostic);

@@ -1,9 +1,8 @@
 // `arealight quality`: the measured data scene selection ranks by (data/quality/
-// measured.json, arealight-quality/1) from report JSON files. Hooked into cli/main.cpp
-// with add_quality_command before parsing and run_quality when it was parsed.
+// measured.json, arealight-quality/1) from report JSON files. Its options are in
+// cli/main.cpp, which calls run_quality.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
 
@@ -17,8 +16,6 @@ struct QualityArgs {
     std::string gpu_family = GpuCostOptions{}.family;
     std::string gpu_cache;  // --gpu-cache / AREALIGHT_GPU_CACHE
 };
-
-CLI::App* add_quality_command(CLI::App& app, QualityArgs& args);
 
 // 0 ok, 3 a report unreadable or the output not written (usage errors are CLI11's, 2).
 int run_quality(const QualityArgs& args);

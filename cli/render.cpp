@@ -30,58 +30,6 @@ std::string default_diff_path(const std::string& out) {
 
 }  // namespace
 
-CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
-    auto* cmd = app.add_subcommand(
-        "render",
-        "Render a scene (arealight-scene/1 plus camera and objects, see examples/scene.json) "
-        "through the shading library: one camera ray per pixel, then every visible point and "
-        "light a case, each variant's cases in one batch. Pixel = sum over lights of "
-        "intensity * (albedo * diffuse + specular); no shadows. The PNG is exposure * radiance "
-        "clamped to [0, 1], sRGB-encoded. With --compare, prints the image's error against a "
-        "linear reference (luminance: relL2, and median / p95 / max of "
-        "|Y - Y_ref| / max(Y_ref, floor)) and writes that per-pixel error in false colour "
-        "(viridis, log scale 1e-4 .. 1, colour bar with decade labels below the picture)");
-    cmd->add_option("--scene", a.scene, "scene file")->required();
-    cmd->add_option("--out", a.out, "PNG file to write")->required();
-    auto* variant = cmd->add_option(
-        "--variant", a.variants,
-        "variant for the lights and materials of its dist and light (repeatable, one per "
-        "pair); default: the scene's selection, as 'arealight generate --scene' makes it "
-        "(quality.method, quality.max_error, default 0.02, by the measured data built in)");
-    cmd->add_flag("--reference", a.reference,
-                  "shade with the oracle (arealight reference) instead of a variant")
-        ->excludes(variant);
-    cmd->add_option("--size", a.size, "image width and height in pixels")
-        ->expected(2)
-        ->check(CLI::Range(1, 8192))
-        ->capture_default_str();
-    cmd->add_option("--backend", a.backend, "cpu (the CPU mirror) or vulkan (the SPIR-V)")
-        ->check(CLI::IsMember({"cpu", "vulkan"}))
-        ->capture_default_str();
-    cmd->add_option("--device", a.device, "Vulkan device name substring (default: first)");
-    cmd->add_option("--exposure", a.exposure, "radiance multiplier before the sRGB encoding")
-        ->check(CLI::PositiveNumber)
-        ->capture_default_str();
-    cmd->add_option("--linear", a.linear,
-                    "also write the linear radiance: a colour PFM (little-endian float RGB, "
-                    "rows bottom to top)");
-    cmd->add_option("--compare", a.compare,
-                    "linear reference (a PFM from --linear, e.g. of a --reference render) to "
-                    "measure the error against");
-    cmd->add_option("--diff", a.diff,
-                    "error image to write with --compare (default: OUT with _diff before .png)");
-    cmd->add_option("--floor", a.floor, "luminance floor of the relative error")
-        ->check(CLI::PositiveNumber)
-        ->capture_default_str();
-    cmd->add_option("--tolerance", a.tolerance, "--reference: the oracle's relative accuracy")
-        ->check(CLI::Range(1e-14, 1e-1))
-        ->capture_default_str();
-    cmd->add_option("--threads", a.threads, "--reference: worker threads (0: every core)")
-        ->check(CLI::Range(0u, 256u))
-        ->capture_default_str();
-    return cmd;
-}
-
 int run_render(const RenderArgs& a) {
     const auto start = std::chrono::steady_clock::now();
     auto scene = read_render_scene(a.scene, print_diagnostic);

@@ -1,10 +1,8 @@
 // `arealight render`: a scene's picture through the shading library (or the oracle), as
 // a PNG, optionally its linear radiance (PFM) and its error against a linear reference.
-// Hooked into cli/main.cpp with add_render_command before parsing and run_render when
-// the subcommand was parsed.
+// Its options are in cli/main.cpp, which calls run_render.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
 
@@ -18,8 +16,6 @@ struct RenderArgs {
     double exposure = 1.0, floor = 1e-3, tolerance = 1e-4;
     unsigned threads = 0;  // 0: hardware concurrency
 };
-
-CLI::App* add_render_command(CLI::App& app, RenderArgs& args);
 
 // Exit codes as cli/main.cpp: 0 ok, 1 bad input, 3 runtime or write failure.
 int run_render(const RenderArgs& args);

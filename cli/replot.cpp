@@ -18,16 +18,6 @@ enum Exit { kOk = 0, kBadInput = 1, kRuntime = 3 };
 
 }  // namespace
 
-CLI::App* add_replot_command(CLI::App& app, ReplotArgs& args) {
-    auto* cmd = app.add_subcommand(
-        "replot",
-        "Draw a report's or sweep's markdown and pictures again from its JSON (DIR/report.json "
-        "or DIR/sweep.json), with today's plots and marks (Pareto front, recommended "
-        "variant), without measuring again; the JSON is rewritten with the marks");
-    cmd->add_option("dirs", args.dirs, "folders that arealight report or sweep wrote")->required();
-    return cmd;
-}
-
 int run_replot(const ReplotArgs& args) {
     // Every folder is read before anything is written.
     std::vector<std::pair<std::string, Report>> reports;

@@ -52,15 +52,16 @@ if [ "${PLAIN_ALL:-0}" = 1 ]; then
 else
   step build bash scripts/build.sh arealight arealight_tests
 fi
-plain_only=$(grep -v '^#' scripts/plain_only_tests.txt | grep -v '^$' | paste -sd'|')
+mapfile -t patterns < <(grep -v '^#' scripts/plain_only_tests.txt | grep -v '^$')
+plain_only=$(IFS='|'; echo "${patterns[*]}")
 # Each line must still name a test: a renamed test would otherwise leave the list silently
 # and run under ASan at several times its plain cost (the LTC Fresnel test did, 25 s).
-while read -r pattern; do
+for pattern in "${patterns[@]}"; do
   if ctest --test-dir build -N -R "$pattern" | grep -q '^Total Tests: 0$'; then
     echo "test.sh: scripts/plain_only_tests.txt: '$pattern' matches no test" >&2
     exit 1
   fi
-done < <(grep -v '^#' scripts/plain_only_tests.txt | grep -v '^$')
+done
 if [ "${PLAIN_ALL:-0}" = 1 ]; then plain_args=(); else plain_args=(-R "$plain_only"); fi
 # The two all-variant runs first and alone: they compile every listed variant on lavapipe,
 # whose shader cache the other tests (the HLSL-against-GLSL kernels: 218 s with a cold cache,
