@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Replace some rows of committed reports by the rows of a newer report of the same cases.
+"""Replace some rows of committed reports (or sweeps) by the rows of a newer one of the same cases.
 
 A change to one family's shaders (e.g. the LTC tables) leaves every other row of the
 per-light reports as measured; re-running those reports whole costs tens of minutes. This
@@ -10,6 +10,8 @@ report under DEST that has a row of the same variant (never the point-light base
 other rows' time ratios were measured against theirs). Each row keeps what it was measured with: its own lavapipe time ratio
 against the point light of the run it comes from. Afterwards run `arealight replot DEST...`,
 which recomputes the Pareto and recommended marks and redraws the markdown and plots.
+Sweeps (sweep.json) work the same way, a row being a variant at one value of the swept
+parameter; source and destination must sweep the same axis.
 
 Usage: python3 scripts/splice_report.py NEW/report.json DEST/report.json... [--only method=ltc]
        [--skip dist=ggx]
@@ -39,16 +41,23 @@ def main(argv):
         return ("method=point" not in keys and all(o in keys for o in only)
                 and not any(s in keys for s in skip))
 
-    rows = {r["variant"]: r for r in src["rows"] if wanted(r["variant"])}
+    # A sweep's rows are one per variant and value of its parameter (e.g. alpha).
+    param = src.get("parameter")
+    def key(r):
+        return (r["variant"], r[param]) if param else r["variant"]
+    rows = {key(r): r for r in src["rows"] if wanted(r["variant"])}
     out = {}
     for path in dests:
         d = json.load(open(path))
         if d["case_files"] != src["case_files"]:
             sys.exit(f"{path}: case files {d['case_files']} differ from {src_path}'s")
+        if d.get("parameter") != param or d.get("axis") != src.get("axis"):
+            sys.exit(f"{path}: axis {d.get('axis')} ({d.get('parameter')}) differs from "
+                     f"{src_path}'s")
         n = 0
         for k, r in enumerate(d["rows"]):
-            if r["variant"] in rows:
-                d["rows"][k] = rows[r["variant"]]
+            if key(r) in rows:
+                d["rows"][k] = rows[key(r)]
                 n += 1
         out[path] = (d, n)
     for path, (d, n) in out.items():

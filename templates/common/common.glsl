@@ -7,11 +7,17 @@
 // The peak-function methods on polygons at fp32 (errors ~1e-2 by construction) take
 // cheaper forms of atan2 and log (AL_FAST_ARC below): on RDNA2 (navi21, `arealight
 // gpu-cost`) they cut GGX lorentz from 29 124 to 24 555 cycles per wave, Phong lorentz
-// from 11 480 to 9 509, and change no public set's relL2 by more than 0.5%. The exact and
-// other methods keep the ulp-accurate forms their 1e-5 bars need, and so do curved lights:
-// there the Phong boundary's horizon cases went from 0.0024 to 0.021 with them.
+// from 11 480 to 9 509, and change no public set's relL2 by more than 0.5%. So do the
+// microfacet exact methods at O(1) node counts (fp32, nodes <= 3: errors 1e-3 to 1e-2 by
+// construction): ggx nodes=2 radial=2 23 687 -> 20 937 cycles a wave, beckmann 23 545 ->
+// 21 886, every public set's specular, ndf and diffuse relL2 unchanged to 3 digits. The
+// other methods keep the ulp-accurate forms their bars need: the exact ones at their
+// default node counts went from ~1e-6 to ~5e-6 with them and Phong's two-sided horizon
+// cases from 6.6e-5 to 1.7e-3 (the swept azimuths' 1.7e-6 rad); and so do curved lights,
+// where the Phong boundary's horizon cases went from 0.0024 to 0.021.
 #if !AL_PRECISION_FP64 && defined(AL_LIGHT_POLYGON) && \
-    (defined(AL_METHOD_LORENTZ) || defined(AL_METHOD_PEARSON) || defined(AL_METHOD_ELLIPSOID))
+    (defined(AL_METHOD_LORENTZ) || defined(AL_METHOD_PEARSON) || defined(AL_METHOD_ELLIPSOID) || \
+     (defined(AL_METHOD_EXACT) && !defined(AL_DIST_PHONG) && AL_NODES <= 3))
 #define AL_FAST_ARC 1
 #endif
 

@@ -46,7 +46,8 @@
 // GPU cost (navi21, `arealight gpu-cost`, the validation kernel, GGX polygon, 2026-12-06):
 // fp64 default 2 343 030 (4 700x the point light's 498; 256 VGPRs, 282 spilled; 2 019 845
 // before the centre's Newton steps and GGX's radial spread); precision=fp32 70 660 (142x;
-// was 65 165); nodes=2 radial=2 fp32 23 687 (47.6x, 160 VGPRs; was 22 149).
+// was 65 165); nodes=2 radial=2 fp32 20 937 (42.0x, 152 VGPRs; 23 687 before it took
+// AL_FAST_ARC, common/common.glsl, on 2026-12-07; 22 149 before the radial spread).
 //
 // Curved lights (disk, sphere, ellipsoid): the same pieces along their curved
 // boundary (al_mf_piece with conic true; al_moments_conic, light/ellipse_clip.glsl), w and
