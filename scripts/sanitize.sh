@@ -23,12 +23,16 @@ flags+=" -fno-sanitize-recover=all -Wno-maybe-uninitialized"
 # builds it at -O0: 28 CPU-backend tests took 60.6 s against 57.5 s at -O3). Its generated
 # code is the templates' (the same text as the shaders, checked by glslang and spirv-val);
 # SANITIZE_MIRROR=1 compiles it under the sanitizers too, at -O0.
+# Catch2's runner, uninstrumented in either tree (tests/CMakeLists.txt), is the Release tree's
+# too.
 if [ "${SANITIZE_MIRROR:-0}" = 1 ]; then
+  bash scripts/build.sh arealight_test_main >/dev/null
   mirror_args=(-DAREALIGHT_PREBUILT_MIRROR= -DAREALIGHT_MIRROR_FLAGS=-O0)
 else
-  bash scripts/build.sh arealight_mirror >/dev/null
+  bash scripts/build.sh arealight_mirror arealight_test_main >/dev/null
   mirror_args=(-DAREALIGHT_PREBUILT_MIRROR="$PWD/build/generator/libarealight_mirror.a")
 fi
+mirror_args+=(-DAREALIGHT_PREBUILT_TEST_MAIN="$PWD/build/tests/libarealight_test_main.a")
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O0 -g1 $flags" \
   -DAREALIGHT_NUMERIC_FLAGS=-O1 \
   -DCMAKE_EXE_LINKER_FLAGS="$flags" "${mirror_args[@]}" >/dev/null
