@@ -8,8 +8,8 @@
 // The shading library of CONTRACT.md 5: include it in any stage. Names outside
 // the contract's are prefixed al_<light>_<dist>_ (AL_..., Al...) so that they
 // cannot collide with a renderer's or another arealight library's.
-#ifndef AREALIGHT_LIBRARY_F5F014DCA0981818
-#define AREALIGHT_LIBRARY_F5F014DCA0981818 1
+#ifndef AREALIGHT_LIBRARY_30E48ACDBBE79D18
+#define AREALIGHT_LIBRARY_30E48ACDBBE79D18 1
 #extension GL_GOOGLE_cpp_style_line_directive : enable
 #extension GL_EXT_control_flow_attributes : enable
 #line 1 "templates/library/types.glsl"
@@ -72,11 +72,17 @@ struct ArealightShading {
 // The peak-function methods on polygons at fp32 (errors ~1e-2 by construction) take
 // cheaper forms of atan2 and log (AL_FAST_ARC below): on RDNA2 (navi21, `arealight
 // gpu-cost`) they cut GGX lorentz from 29 124 to 24 555 cycles per wave, Phong lorentz
-// from 11 480 to 9 509, and change no public set's relL2 by more than 0.5%. The exact and
-// other methods keep the ulp-accurate forms their 1e-5 bars need, and so do curved lights:
-// there the Phong boundary's horizon cases went from 0.0024 to 0.021 with them.
+// from 11 480 to 9 509, and change no public set's relL2 by more than 0.5%. So do the
+// microfacet exact methods at O(1) node counts (fp32, nodes <= 3: errors 1e-3 to 1e-2 by
+// construction): ggx nodes=2 radial=2 23 687 -> 20 937 cycles a wave, beckmann 23 545 ->
+// 21 886, every public set's specular, ndf and diffuse relL2 unchanged to 3 digits. The
+// other methods keep the ulp-accurate forms their bars need: the exact ones at their
+// default node counts went from ~1e-6 to ~5e-6 with them and Phong's two-sided horizon
+// cases from 6.6e-5 to 1.7e-3 (the swept azimuths' 1.7e-6 rad); and so do curved lights,
+// where the Phong boundary's horizon cases went from 0.0024 to 0.021.
 #if !AL_POLYGON_PHONG_PRECISION_FP64 && defined(AL_POLYGON_PHONG_LIGHT_POLYGON) && \
-    (defined(AL_POLYGON_PHONG_METHOD_LORENTZ) || defined(AL_POLYGON_PHONG_METHOD_PEARSON) || defined(AL_POLYGON_PHONG_METHOD_ELLIPSOID))
+    (defined(AL_POLYGON_PHONG_METHOD_LORENTZ) || defined(AL_POLYGON_PHONG_METHOD_PEARSON) || defined(AL_POLYGON_PHONG_METHOD_ELLIPSOID) || \
+     (defined(AL_POLYGON_PHONG_METHOD_EXACT) && !defined(AL_POLYGON_PHONG_DIST_PHONG) && AL_POLYGON_PHONG_NODES <= 3))
 #define AL_POLYGON_PHONG_FAST_ARC 1
 #endif
 
@@ -355,7 +361,7 @@ void al_polygon_phong_tangent_frame(al_polygon_phong_rvec3 al_polygon_phong_z, A
 // precision: a value beyond the fp32 range is thus caught here too.
 float al_polygon_phong_clean(float al_polygon_phong_x) { return (al_polygon_phong_x >= 0.0f && al_polygon_phong_x <= 3.0e38f) ? al_polygon_phong_x : 0.0f; }
 vec4 al_polygon_phong_clean(vec4 al_polygon_phong_x) { return vec4(al_polygon_phong_clean(al_polygon_phong_x.x), al_polygon_phong_clean(al_polygon_phong_x.y), al_polygon_phong_clean(al_polygon_phong_x.z), al_polygon_phong_clean(al_polygon_phong_x.w)); }
-#line 359 "arealight-generated"
+#line 365 "arealight-generated"
 #line 1 "templates/dist/phong.glsl"
 // Energy-conserving Phong, CONTRACT.md 2: f = (N+2)/(2 pi) (r.w)_+^N.
 
@@ -372,7 +378,7 @@ al_polygon_phong_real al_polygon_phong_phong_power(al_polygon_phong_rvec3 al_pol
 al_polygon_phong_real al_polygon_phong_phong_brdf(al_polygon_phong_rvec3 al_polygon_phong_r, al_polygon_phong_rvec3 al_polygon_phong_w, al_polygon_phong_real al_polygon_phong_N) {
     return (al_polygon_phong_N + 2.0f) / AL_POLYGON_PHONG_TWO_PI * al_polygon_phong_phong_power(al_polygon_phong_r, al_polygon_phong_w, al_polygon_phong_N);
 }
-#line 376 "arealight-generated"
+#line 382 "arealight-generated"
 #line 1 "templates/light/point_light.glsl"
 // A point light of solid angle omega in direction w (unit): the point-light baseline
 // every speed ratio divides by (light/polygon_methods.glsl: the polygon's centre;
@@ -390,7 +396,7 @@ vec4 al_polygon_phong_point_light(AlPolygonPhongCase al_polygon_phong_c, al_poly
 #endif
     return vec4(al_polygon_phong_nw / AL_POLYGON_PHONG_PI * al_polygon_phong_solid_angle, al_polygon_phong_spec, 0.0f, 0.0f);
 }
-#line 394 "arealight-generated"
+#line 400 "arealight-generated"
 #line 1 "templates/light/polygon.glsl"
 // Polygon lights (CONTRACT.md 1) as spherical polygons: orientation, sidedness,
 // exact clipping to the hemispheres of n and of the lobe axis, and the exact diffuse
@@ -573,7 +579,7 @@ al_polygon_phong_rvec2 al_polygon_phong_polygon_moments(AlPolygonPhongCase al_po
 #endif
 #endif
 #endif
-#line 577 "arealight-generated"
+#line 583 "arealight-generated"
 #line 1 "templates/light/polygon_methods.glsl"
 // Shading of polygon lights (CONTRACT.md 2) by each method: the point-light
 // baseline, or clipping (light/polygon.glsl) and the method's boundary moments.
@@ -691,7 +697,7 @@ vec4 al_polygon_phong_shade(AlPolygonPhongCase al_polygon_phong_c) {
     return vec4(diffuse, specular, al_polygon_phong_sm.y, 0.0f);
 }
 #endif
-#line 695 "arealight-generated"
+#line 701 "arealight-generated"
 #line 1 "templates/library/polygon.glsl"
 // The library entry for polygon lights (CONTRACT.md 5): the renderer's fp32 values,
 // in any consistent space, turned into the record the methods work on, in the
@@ -743,7 +749,7 @@ AlPolygonPhongCase al_polygon_phong_polygon_record(ArealightSurface al_polygon_p
 vec4 al_polygon_phong_polygon_evaluate(ArealightSurface al_polygon_phong_s, vec3 al_polygon_phong_vertices[8], int al_polygon_phong_count, bool al_polygon_phong_two_sided) {
     return al_polygon_phong_clean(al_polygon_phong_shade(al_polygon_phong_polygon_record(al_polygon_phong_s, al_polygon_phong_vertices, al_polygon_phong_count, al_polygon_phong_two_sided)));
 }
-#line 747 "arealight-generated"
+#line 753 "arealight-generated"
 // arealight_polygon_phong: variant dist=phong,method=point,light=polygon,verts=4.
 // Domain: p, n, v, the light in one space, fp32 (n, v any length); convex planar polygon, counter-clockwise seen from its emitting side, count in [3, AL_MAX_VERTS] (more are cut to the first AL_MAX_VERTS); s.param the exponent N in [1, 1e5]; s.f0 in [0, 1] (ignored).
 // Returns diffuse and specular of CONTRACT.md 2 for unit radiance: finite, >= 0.
@@ -756,7 +762,7 @@ ArealightShading arealight_polygon_phong(ArealightSurface al_polygon_phong_s, ve
     return al_polygon_phong_result;
 }
 #define AREALIGHT_HAS_POLYGON_PHONG 1
-#endif  // AREALIGHT_LIBRARY_F5F014DCA0981818
+#endif  // AREALIGHT_LIBRARY_30E48ACDBBE79D18
 #define AL_KERNEL_SHADE arealight_polygon_phong
 #define AL_KERNEL_EVALUATE al_polygon_phong_polygon_evaluate
 #define AL_KERNEL_ARGS vertices, count, two_sided
@@ -813,4 +819,4 @@ void main() {
 #endif
     al_results[i] = result;
 }
-#line 817 "arealight-generated"
+#line 823 "arealight-generated"
