@@ -8,16 +8,11 @@
 #include "arealight/case_io.hpp"
 #include "arealight/evaluator.hpp"
 #include "arealight/machine_code.hpp"
+#include "exit_code.hpp"
 #include "print_diagnostic.hpp"
 #include "progress.hpp"
 
 namespace arealight::cli {
-
-namespace {
-
-enum Exit { kOk = 0, kBadInput = 1, kRuntime = 3 };
-
-}  // namespace
 
 int run_bench(const BenchArgs& a) {
     BenchOptions opt;

@@ -8,12 +8,11 @@
 
 #include "arealight/atomic_file.hpp"
 #include "arealight/compiler.hpp"
+#include "exit_code.hpp"
 
 namespace arealight::cli {
 
 namespace {
-
-enum Exit { kOk = 0, kBadInput = 1, kUsage = 2, kRuntime = 3 };
 
 // Compiler diagnostics carry their position apart from the message: print it gcc-style, so
 // that an error in an included file reads `lib.glsl:12: ...`.

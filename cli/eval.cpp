@@ -6,15 +6,10 @@
 #include "arealight/evaluator.hpp"
 #include "arealight/generator.hpp"
 #include "arealight/score.hpp"
+#include "exit_code.hpp"
 #include "print_diagnostic.hpp"
 
 namespace arealight::cli {
-
-namespace {
-
-enum Exit { kOk = 0, kBadInput = 1, kUsage = 2, kRuntime = 3 };
-
-}  // namespace
 
 int run_variants() {
     for (const auto& v : enumerate_variants()) fmt::print("{}\n", canonical_name(v));

@@ -7,6 +7,7 @@
 
 #include "arealight/atomic_file.hpp"
 #include "arealight/ltc_table.hpp"
+#include "exit_code.hpp"
 #include "print_diagnostic.hpp"
 
 namespace arealight::cli {
@@ -42,15 +43,15 @@ int run_fit_ltc(const FitLtcArgs& args) {
         std::fflush(stderr);
     };
     auto table = fit_ltc(d, opt, print_diagnostic);
-    if (!table) return 3;
+    if (!table) return kRuntime;
     table->command = "arealight fit-ltc --dist " + args.dist + " --size " +
                      std::to_string(args.size) + " --out " + args.out;
-    if (!write_file_atomic(args.out, format_ltc_table(*table), print_diagnostic)) return 3;
+    if (!write_file_atomic(args.out, format_ltc_table(*table), print_diagnostic)) return kRuntime;
     std::fprintf(stderr, "fit-ltc %s: %dx%d cells in %.1f s; wrote %s\n", args.dist.c_str(),
                  args.size, args.size,
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                  args.out.c_str());
-    return 0;
+    return kOk;
 }
 
 }  // namespace arealight::cli

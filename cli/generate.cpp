@@ -8,11 +8,10 @@
 #include "arealight/generator.hpp"
 #include "arealight/library_tables.hpp"
 #include "arealight/scene_select.hpp"
+#include "exit_code.hpp"
 
 namespace arealight::cli {
 namespace {
-
-enum Exit { kOk = 0, kBadInput = 1, kUsage = 2, kRuntime = 3 };
 
 // Each function's comment line of measured error and cost, from the data built in
 // (data/quality/measured.json, made from the reports by `arealight quality`).

@@ -7,6 +7,7 @@
 #include "arealight/gpu_cost_json.hpp"
 #include "arealight/read_file.hpp"
 #include "arealight/variant.hpp"
+#include "exit_code.hpp"
 #include "print_diagnostic.hpp"
 
 namespace arealight::cli {
@@ -14,19 +15,19 @@ namespace arealight::cli {
 int run_gpu_cost(const GpuCostArgs& args) {
     if (args.variants.empty() && args.spv.empty()) {
         print_diagnostic({Severity::Error, "", 0, "gpu-cost: --variant or --spv is required"});
-        return 2;
+        return kUsage;
     }
     std::vector<Variant> variants;
     for (const auto& name : args.variants) {
         auto v = parse_variant(name, print_diagnostic);
-        if (!v) return 1;
+        if (!v) return kBadInput;
         variants.push_back(*v);
     }
     GpuCostOptions opt;
     opt.family = args.gpu_family;
     opt.cache_dir = args.gpu_cache;
     auto meter = GpuCostMeter::create(opt, print_diagnostic);
-    if (!meter) return 3;
+    if (!meter) return kRuntime;
     auto line = [](const std::string& key, const std::string& what, const GpuCost& c) {
         nlohmann::ordered_json j;
         j[key] = what;
@@ -35,23 +36,23 @@ int run_gpu_cost(const GpuCostArgs& args) {
     };
     for (const auto& v : variants) {
         auto c = meter->measure(v, print_diagnostic);
-        if (!c) return 3;
+        if (!c) return kRuntime;
         line("variant", canonical_name(v), *c);
     }
     for (const auto& path : args.spv) {
         auto bytes = read_file(path, print_diagnostic);
-        if (!bytes) return 1;
+        if (!bytes) return kBadInput;
         if (bytes->size() % 4 != 0) {
             print_diagnostic({Severity::Error, path, 0, path + ": not a whole number of words"});
-            return 1;
+            return kBadInput;
         }
         std::vector<uint32_t> words(bytes->size() / 4);
         if (!words.empty()) std::memcpy(words.data(), bytes->data(), bytes->size());
         auto c = meter->measure(words, print_diagnostic);
-        if (!c) return 3;
+        if (!c) return kRuntime;
         line("file", path, *c);
     }
-    return 0;
+    return kOk;
 }
 
 }  // namespace arealight::cli

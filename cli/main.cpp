@@ -15,6 +15,7 @@
 #include "bench.hpp"
 #include "compile.hpp"
 #include "eval.hpp"
+#include "exit_code.hpp"
 #include "fit_ltc.hpp"
 #include "generate.hpp"
 #include "generate_scene.hpp"
@@ -30,12 +31,11 @@ namespace arealight::cli {
 
 namespace {
 
-enum Exit { kUsage = 2 };
-
-// `--gpu-family` of report, sweep, bench, quality and gpu-cost: the RADV chip the GPU cost
-// is compiled for, checked against the names the driver knows before it ever sees one (an
-// unknown name aborts it).
-void add_gpu_family_option(CLI::App* cmd, std::string& family) {
+// The GPU cost's options, which report, sweep, bench, quality and gpu-cost share:
+// `--gpu-family`, the RADV chip it is compiled for, checked against the names the driver
+// knows before it ever sees one (an unknown name aborts it); `--gpu-cache DIR` (or
+// AREALIGHT_GPU_CACHE), GpuCostOptions::cache_dir, created when missing.
+void add_gpu_options(CLI::App* cmd, std::string& family, std::string& cache_dir) {
     std::string names;
     for (const auto& f : radv_families()) names += (names.empty() ? "" : " ") + f;
     cmd->add_option("--gpu-family", family,
@@ -48,12 +48,7 @@ void add_gpu_family_option(CLI::App* cmd, std::string& family) {
             },
             "FAMILY"))
         ->capture_default_str();
-}
-
-// `--gpu-cache DIR` (or AREALIGHT_GPU_CACHE): GpuCostOptions::cache_dir. The folder is
-// created when missing.
-void add_gpu_cache_option(CLI::App* cmd, std::string& dir) {
-    cmd->add_option("--gpu-cache", dir,
+    cmd->add_option("--gpu-cache", cache_dir,
                     "folder that keeps RADV's statistics per module, so that a module "
                     "compiled once (in any run) is not compiled again; default: none")
         ->envname("AREALIGHT_GPU_CACHE");
@@ -74,8 +69,7 @@ void add_measure_options(CLI::App* cmd, ReportArgs& a) {
     cmd->add_option("--threads", a.threads, "oracle threads")
         ->check(CLI::Range(1u, 256u))
         ->capture_default_str();
-    add_gpu_family_option(cmd, a.gpu_family);
-    add_gpu_cache_option(cmd, a.gpu_cache);
+    add_gpu_options(cmd, a.gpu_family, a.gpu_cache);
 }
 
 CLI::App* add_compile_command(CLI::App& app, CompileArgs& args) {
@@ -177,8 +171,7 @@ CLI::App* add_gpu_cost_command(CLI::App& app, GpuCostArgs& args) {
     cmd->add_option("--variant", args.variants, "variant name (repeatable)");
     cmd->add_option("--spv", args.spv, "SPIR-V compute module (repeatable)")
         ->check(CLI::ExistingFile);
-    add_gpu_family_option(cmd, args.gpu_family);
-    add_gpu_cache_option(cmd, args.gpu_cache);
+    add_gpu_options(cmd, args.gpu_family, args.gpu_cache);
     return cmd;
 }
 
@@ -193,8 +186,7 @@ CLI::App* add_quality_command(CLI::App& app, QualityArgs& args) {
         ->check(CLI::ExistingFile);
     cmd->add_option("--out", args.out, "quality file to write (data/quality/measured.json)")
         ->required();
-    add_gpu_family_option(cmd, args.gpu_family);
-    add_gpu_cache_option(cmd, args.gpu_cache);
+    add_gpu_options(cmd, args.gpu_family, args.gpu_cache);
     return cmd;
 }
 
@@ -319,8 +311,7 @@ CLI::App* add_bench_command(CLI::App& app, BenchArgs& a) {
     cmd->add_option("--repeat", a.repeats, "timed runs per variant")
         ->check(CLI::Range(1, 1000))
         ->capture_default_str();
-    add_gpu_family_option(cmd, a.gpu_family);
-    add_gpu_cache_option(cmd, a.gpu_cache);
+    add_gpu_options(cmd, a.gpu_family, a.gpu_cache);
     return cmd;
 }
 

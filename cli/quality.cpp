@@ -5,6 +5,7 @@
 #include "arealight/atomic_file.hpp"
 #include "arealight/quality.hpp"
 #include "arealight/variant.hpp"
+#include "exit_code.hpp"
 #include "print_diagnostic.hpp"
 #include "progress.hpp"
 
@@ -12,7 +13,7 @@ namespace arealight::cli {
 
 int run_quality(const QualityArgs& args) {
     auto data = quality_from_reports(args.reports, print_diagnostic);
-    if (!data) return 3;
+    if (!data) return kRuntime;
     // A report older than a change to the variant keys may name what no longer exists:
     // selection could never choose it, so it does not ship.
     std::vector<MeasuredVariant> kept;
@@ -38,17 +39,17 @@ int run_quality(const QualityArgs& args) {
         for (auto& m : data->variants) {
             const auto v = parse_variant(m.variant, {});
             m.gpu = meter->measure(*v, print_diagnostic);
-            if (!m.gpu) return 3;
+            if (!m.gpu) return kRuntime;
             progress(++measured, data->variants.size());
         }
     }
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (!write_file_atomic(args.out, format_quality(*data), print_diagnostic)) return 3;
+    if (!write_file_atomic(args.out, format_quality(*data), print_diagnostic)) return kRuntime;
     std::fprintf(stderr,
                  "quality: %zu variants from %zu reports (GPU cost of %zu in %.0f s); wrote %s\n",
                  data->variants.size(), data->reports.size(), measured, seconds, args.out.c_str());
-    return 0;
+    return kOk;
 }
 
 }  // namespace arealight::cli

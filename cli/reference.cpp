@@ -6,17 +6,12 @@
 
 #include "arealight/case_io.hpp"
 #include "arealight/reference.hpp"
+#include "exit_code.hpp"
 #include "print_diagnostic.hpp"
 #include "progress.hpp"
 #include "summary.hpp"
 
 namespace arealight::cli {
-
-namespace {
-
-enum Exit { kOk = 0, kBadInput = 1, kRuntime = 3 };
-
-}  // namespace
 
 int run_reference(const ReferenceArgs& a) {
     auto cases = read_cases(a.cases, print_diagnostic);

@@ -12,14 +12,13 @@
 #include "arealight/png_image.hpp"
 #include "arealight/render.hpp"
 #include "arealight/tone_map.hpp"
+#include "exit_code.hpp"
 #include "print_diagnostic.hpp"
 #include "progress.hpp"
 
 namespace arealight::cli {
 
 namespace {
-
-enum Exit { kOk = 0, kBadInput = 1, kRuntime = 3 };
 
 // IMAGE.png -> IMAGE_diff.png (any other name: NAME_diff.png).
 std::string default_diff_path(const std::string& out) {

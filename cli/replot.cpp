@@ -8,15 +8,10 @@
 #include "arealight/atomic_file.hpp"
 #include "arealight/read_file.hpp"
 #include "arealight/report.hpp"
+#include "exit_code.hpp"
 #include "print_diagnostic.hpp"
 
 namespace arealight::cli {
-
-namespace {
-
-enum Exit { kOk = 0, kBadInput = 1, kRuntime = 3 };
-
-}  // namespace
 
 int run_replot(const ReplotArgs& args) {
     // Every folder is read before anything is written.

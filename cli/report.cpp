@@ -15,14 +15,13 @@
 #include "arealight/evaluator.hpp"
 #include "arealight/machine_code.hpp"
 #include "arealight/report.hpp"
+#include "exit_code.hpp"
 #include "print_diagnostic.hpp"
 #include "progress.hpp"
 
 namespace arealight::cli {
 
 namespace {
-
-enum Exit { kOk = 0, kBadInput = 1, kRuntime = 3 };
 
 // Reads and concatenates case files; ids must be unique across them.
 std::optional<CaseSet> read_case_files(const std::vector<std::string>& paths) {

@@ -25,14 +25,15 @@ flags+=" -fno-sanitize-recover=all -Wno-maybe-uninitialized"
 # SANITIZE_MIRROR=1 compiles it under the sanitizers too, at -O0.
 # Catch2's runner, uninstrumented in either tree (tests/CMakeLists.txt), is the Release tree's
 # too.
+prebuilt=(arealight_test_main)
+mirror_args=(-DAREALIGHT_PREBUILT_TEST_MAIN="$PWD/build/tests/libarealight_test_main.a")
 if [ "${SANITIZE_MIRROR:-0}" = 1 ]; then
-  bash scripts/build.sh arealight_test_main >/dev/null
-  mirror_args=(-DAREALIGHT_PREBUILT_MIRROR= -DAREALIGHT_MIRROR_FLAGS=-O0)
+  mirror_args+=(-DAREALIGHT_PREBUILT_MIRROR= -DAREALIGHT_MIRROR_FLAGS=-O0)
 else
-  bash scripts/build.sh arealight_mirror arealight_test_main >/dev/null
-  mirror_args=(-DAREALIGHT_PREBUILT_MIRROR="$PWD/build/generator/libarealight_mirror.a")
+  prebuilt+=(arealight_mirror)
+  mirror_args+=(-DAREALIGHT_PREBUILT_MIRROR="$PWD/build/generator/libarealight_mirror.a")
 fi
-mirror_args+=(-DAREALIGHT_PREBUILT_TEST_MAIN="$PWD/build/tests/libarealight_test_main.a")
+bash scripts/build.sh "${prebuilt[@]}" >/dev/null
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O0 -g1 $flags" \
   -DAREALIGHT_NUMERIC_FLAGS=-O1 \
   -DCMAKE_EXE_LINKER_FLAGS="$flags" "${mirror_args[@]}" >/dev/null
