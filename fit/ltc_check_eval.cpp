@@ -37,15 +37,22 @@ LtcCell ltc_lookup(const LtcTable& t, double param, double cos_theta_v) {
     double fu, fw;
     axis(u, i0, i1, fu);
     axis(w, j0, j1, fw);
-    auto mix = [&](double LtcCell::*m) {
-        const double a = t.at(i0, j0).*m * (1 - fu) + t.at(i1, j0).*m * fu;
-        const double b = t.at(i0, j1).*m * (1 - fu) + t.at(i1, j1).*m * fu;
+    // (a, b, c) as the matrix texture holds them (GGX: times the cell's alpha, and back over
+    // the case's; include/arealight/ltc_table.hpp).
+    const bool scaled = ltc_alpha_scaled(t.dist);
+    const double s0 = scaled ? std::pow(ltc_cell_rho(t, i0), 2) : 1.0;
+    const double s1 = scaled ? std::pow(ltc_cell_rho(t, i1), 2) : 1.0;
+    const double alpha = scaled ? std::pow(std::clamp(rho, t.rho_min, t.rho_max), 2) : 1.0;
+    auto mix_scaled = [&](double LtcCell::*m, double k0, double k1) {
+        const double a = t.at(i0, j0).*m * k0 * (1 - fu) + t.at(i1, j0).*m * k1 * fu;
+        const double b = t.at(i0, j1).*m * k0 * (1 - fu) + t.at(i1, j1).*m * k1 * fu;
         return a * (1 - fw) + b * fw;
     };
+    auto mix = [&](double LtcCell::*m) { return mix_scaled(m, 1, 1); };
     LtcCell c;
-    c.a = mix(&LtcCell::a);
-    c.b = mix(&LtcCell::b);
-    c.c = mix(&LtcCell::c);
+    c.a = mix_scaled(&LtcCell::a, s0, s1) / alpha;
+    c.b = mix_scaled(&LtcCell::b, s0, s1) / alpha;
+    c.c = mix_scaled(&LtcCell::c, s0, s1) / alpha;
     c.d = mix(&LtcCell::d);
     c.amp_f0 = mix(&LtcCell::amp_f0);
     c.amp_one = mix(&LtcCell::amp_one);

@@ -69,6 +69,8 @@ void ltc_rho_range(Distribution d, double& rho_min, double& rho_max) {
 
 bool ltc_two_lobes(Distribution d) { return d != Distribution::Ggx; }
 
+bool ltc_alpha_scaled(Distribution d) { return d == Distribution::Ggx; }
+
 LtcCell ltc_second_lobe(const LtcCell& c) {
     LtcCell s = c;
     s.a /= kLtcSecondLobeWidth;

@@ -18,9 +18,11 @@ std::vector<Texture2D> ltc_textures(const LtcTable& t) {
             const LtcCell& c = t.at(i, j);
             const std::size_t k = 4 * (static_cast<std::size_t>(j) * n + i);
             float* m = tex[0].rgba.data() + k;
-            m[0] = static_cast<float>(c.a);
-            m[1] = static_cast<float>(c.b);
-            m[2] = static_cast<float>(c.c);
+            const double rho = ltc_cell_rho(t, i);
+            const double alpha = ltc_alpha_scaled(t.dist) ? rho * rho : 1.0;
+            m[0] = static_cast<float>(c.a * alpha);
+            m[1] = static_cast<float>(c.b * alpha);
+            m[2] = static_cast<float>(c.c * alpha);
             m[3] = static_cast<float>(c.d);
             // Sphere proxy: cos omega = 2 u - 1, sin^2 sigma = w; I / sin^2 sigma, whose
             // limit at sigma = 0 is max(cos omega, 0).

@@ -273,9 +273,12 @@ TEST_CASE("LTC: textures hold the cells and the sphere table", "[ltc]") {
         for (int i = 0; i < 64; i += 7) {
             const std::size_t k = 4 * (static_cast<std::size_t>(j) * 64 + i);
             const LtcCell& c = t.at(i, j);
-            CHECK(tex[0].rgba[k + 0] == static_cast<float>(c.a));
-            CHECK(tex[0].rgba[k + 1] == static_cast<float>(c.b));
-            CHECK(tex[0].rgba[k + 2] == static_cast<float>(c.c));
+            // (a, b, c), GGX's scaled by the cell's alpha (include/arealight/ltc_table.hpp).
+            const double rho = ltc_cell_rho(t, i);
+            const double alpha = dist == Distribution::Ggx ? rho * rho : 1.0;
+            CHECK(tex[0].rgba[k + 0] == static_cast<float>(c.a * alpha));
+            CHECK(tex[0].rgba[k + 1] == static_cast<float>(c.b * alpha));
+            CHECK(tex[0].rgba[k + 2] == static_cast<float>(c.c * alpha));
             CHECK(tex[0].rgba[k + 3] == static_cast<float>(c.d));
             CHECK(tex[1].rgba[k + 0] == static_cast<float>(c.amp_f0));
             CHECK(tex[1].rgba[k + 1] == static_cast<float>(c.amp_one));

@@ -15,7 +15,10 @@
 //   w = j / (size - 1) (view: cos theta_v = 1 - w^2).
 //   The shader samples at ((u, w) (size - 1) + 0.5) / size with linear filtering,
 //   so texel centres are exactly the fitted cells.
-// - Texture 0 (matrix): (a, b, c, d) per cell.
+// - Texture 0 (matrix): (a, b, c, d) per cell; for GGX (ltc_alpha_scaled) (alpha a,
+//   alpha b, alpha c, d), alpha = rho^2 the cell's, and the shader divides the filtered
+//   (a, b, c) by the case's alpha (clamped to the grid's range): entries that grow as
+//   1 / alpha then interpolate as the lobe's width does (fit/ltc_fit.cpp: why GGX only).
 // - Texture 1 (amplitude): (A, B, K, S) per cell. Specular of a light region P is
 //   (f0 A + B) times the lobe's integral over P (phong: A, B = 0). The lobe is one
 //   LTC (GGX, K = 0) or, for the Gaussian-tailed lobes (phong, blinn, beckmann), the
@@ -48,6 +51,9 @@ constexpr double kLtcSecondLobeWidth = 1.2;
 
 // Whether a distribution's table fits the two-lobe kernel (K free) or one LTC (K = 0).
 bool ltc_two_lobes(Distribution d);
+
+// Whether a distribution's matrix texture holds (a, b, c) times the cell's alpha (above).
+bool ltc_alpha_scaled(Distribution d);
 
 // One fitted cell.
 struct LtcCell {

@@ -64,14 +64,19 @@ const real AL_LTC_RHO_MAX = AL_R(1.0);
 vec4 textureLod(const AlSampler2D& s, vec2 uv, float) { return texture(s, uv); }
 #endif
 
+// The table's roughness axis alpha of a case's parameter (phong and blinn: the lobe width
+// sqrt(2 / (N + 2)) that stands for alpha; include/arealight/ltc_table.hpp). Exact.
+real al_ltc_alpha(real param) {
+#if defined(AL_DIST_PHONG) || defined(AL_DIST_BLINN)
+    return sqrt(AL_R(2.0) / (param + AL_R(2.0)));
+#else
+    return param;
+#endif
+}
+
 // Texture coordinates of (rho, cos theta_v): texel centres are the fitted cells.
 vec2 al_ltc_uv(real param, real nv, real sin_v) {
-#if defined(AL_DIST_PHONG) || defined(AL_DIST_BLINN)
-    real alpha = sqrt(AL_R(2.0) / (param + AL_R(2.0)));
-#else
-    real alpha = param;
-#endif
-    real rho = sqrt(alpha);
+    real rho = sqrt(al_ltc_alpha(param));
     real u = clamp((rho - AL_LTC_RHO_MIN) / (AL_LTC_RHO_MAX - AL_LTC_RHO_MIN), AL_R(0.0),
                    AL_R(1.0));
     // sqrt(1 - cos) from the sine where the view is within 90 degrees of n: near n,
@@ -367,6 +372,23 @@ AlLtc al_ltc_lookup(AlCase c) {
 #else
     vec2 uv = al_ltc_uv(real(c.params.x), L.nv, ty_len);
     L.m = rvec4(textureLod(al_ltc_matrix, uv, 0.0f));
+#ifdef AL_DIST_GGX
+    {
+        // GGX's matrix texture holds (a, b, c) times the cell's alpha (ltc_table.hpp): they
+        // grow as 1 / alpha, which bilinear filtering of the bare entries follows badly where
+        // neighbouring cells' alphas differ by up to 2.2x (a lobe 12% too narrow halfway
+        // between the two smallest); scaled, a lobe that keeps its shape as it narrows is
+        // interpolated exactly (specular relL2 at alpha = 0.002 9.7e-3 -> 2e-4, typical
+        // set; the two-lobe tables' cells are not one shape: fit/ltc_fit.cpp). The alpha is
+        // clamped as the coordinate u is.
+        real alpha = clamp(al_ltc_alpha(real(c.params.x)), AL_LTC_RHO_MIN * AL_LTC_RHO_MIN,
+                           AL_LTC_RHO_MAX * AL_LTC_RHO_MAX);
+        real inv = AL_R(1.0) / alpha;
+        L.m.x *= inv;
+        L.m.y *= inv;
+        L.m.z *= inv;
+    }
+#endif
     L.amp = rvec4(textureLod(al_ltc_amplitude, uv, 0.0f));
 #endif
     L.row0 = L.m.x * tx + L.m.y * L.n;
