@@ -85,12 +85,18 @@ def main():
     with tempfile.TemporaryDirectory() as tmp, \
             concurrent.futures.ThreadPoolExecutor(max_workers=max(args.jobs, 1)) as pool:
         futures = {key: pool.submit(evaluate, args.arealight, key[0], key[1], tmp) for key in jobs}
+        # Progress: one line rewritten in place on a terminal, a line per 200 otherwise.
+        live = sys.stderr.isatty()
         done = 0
         for key, fut in futures.items():
             jobs[key] = fut.result()
             done += 1
-            if done % 200 == 0 or done == len(futures):
-                print(f"check_reports: {done}/{len(futures)} evaluations", file=sys.stderr)
+            line = f"check_reports: {done}/{len(futures)} evaluations"
+            if live:
+                print("\r" + line, end="\n" if done == len(futures) else "", file=sys.stderr,
+                      flush=True)
+            elif done % 200 == 0 or done == len(futures):
+                print(line, file=sys.stderr)
 
         def pooled(results, q):
             num = den = 0.0
@@ -124,7 +130,7 @@ def main():
                     print(f"{os.path.relpath(path, ROOT)}: {row['variant']}: {q} relL2 "
                           f"{committed:.4g} in the report, {lp:.4g} now on lavapipe "
                           f"({now:.4g} on the CPU mirror)")
-    print(f"check_reports: {len(rows)} rows of {len(reports)} reports, {confirmed} re-run on "
+    print(f"check_reports: {len(rows)} rows of {len(reports)} report{'s' * (len(reports) != 1)}, {confirmed} re-run on "
           f"lavapipe, {stale} stale (a quantity's relL2 off by more than {args.rel:g} "
           f"relative and {args.abs:g})", file=sys.stderr)
     return 1 if stale else 0
