@@ -501,22 +501,18 @@ LtcCell fit_lobe(Distribution d, double alpha, double cos_v, const LtcCell* star
     const LtcCell cell1 = cell_of(p);
     const RegionMetric region(lobe, mom.total, ltc_of(cell1));
     std::unique_ptr<LobeMetric> mid_u, mid_w;
-    // The table's alphas of this cell, of its neighbour (i + 1, j) and halfway between them.
+    // The matrix texture's factors of this cell and of its neighbour (i + 1, j), and the
+    // shader's divisor halfway between them (1, 1, 1 where the bare entries are filtered).
     double alpha_i = 1, alpha_next = 1, alpha_mid = 1;
     if (nb && nb->next_u) {
         LtcTable grid;
         grid.dist = d;
         grid.size = nb->size;
         ltc_rho_range(d, grid.rho_min, grid.rho_max);
-        const double r0 = ltc_cell_rho(grid, nb->i), r1 = ltc_cell_rho(grid, nb->i + 1);
-        const double rho = 0.5 * (r0 + r1);
-        if (ltc_alpha_scaled(d)) {
-            alpha_i = r0 * r0;
-            alpha_next = r1 * r1;
-            alpha_mid = rho * rho;
-        } else {
-            alpha_i = alpha_next = alpha_mid = 1;  // the bare entries are filtered
-        }
+        const double rho = 0.5 * (ltc_cell_rho(grid, nb->i) + ltc_cell_rho(grid, nb->i + 1));
+        alpha_i = ltc_matrix_scale(grid, nb->i);
+        alpha_next = ltc_matrix_scale(grid, nb->i + 1);
+        if (ltc_alpha_scaled(d)) alpha_mid = rho * rho;
         mid_u = std::make_unique<LobeMetric>(
             d, rho * rho, cos_v, halfway(cell1, alpha_i, *nb->next_u, alpha_next, alpha_mid));
     }

@@ -84,6 +84,11 @@ double ltc_cell_rho(const LtcTable& t, int i) {
     return t.rho_min + u * (t.rho_max - t.rho_min);
 }
 
+double ltc_matrix_scale(const LtcTable& t, int i) {
+    const double rho = ltc_cell_rho(t, i);
+    return ltc_alpha_scaled(t.dist) ? rho * rho : 1.0;
+}
+
 double ltc_cell_cos_theta(int size, int j) {
     const double w = size > 1 ? static_cast<double>(j) / (size - 1) : 0.0;
     return 1 - w * w;

@@ -18,8 +18,7 @@ std::vector<Texture2D> ltc_textures(const LtcTable& t) {
             const LtcCell& c = t.at(i, j);
             const std::size_t k = 4 * (static_cast<std::size_t>(j) * n + i);
             float* m = tex[0].rgba.data() + k;
-            const double rho = ltc_cell_rho(t, i);
-            const double alpha = ltc_alpha_scaled(t.dist) ? rho * rho : 1.0;
+            const double alpha = ltc_matrix_scale(t, i);
             m[0] = static_cast<float>(c.a * alpha);
             m[1] = static_cast<float>(c.b * alpha);
             m[2] = static_cast<float>(c.c * alpha);

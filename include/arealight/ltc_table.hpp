@@ -83,6 +83,9 @@ void ltc_rho_range(Distribution d, double& rho_min, double& rho_max);
 // The (roughness, view) of cell (i, j) of a size x size table. ltc_cell_cos_theta is the
 // grid's value (0 on the last row); the fit uses max(it, 1e-3) (fit/ltc_fit.cpp).
 double ltc_cell_rho(const LtcTable& t, int i);
+// The factor the matrix texture applies to (a, b, c) of column i: its alpha where
+// ltc_alpha_scaled, else 1.
+double ltc_matrix_scale(const LtcTable& t, int i);
 double ltc_cell_cos_theta(int size, int j);
 
 struct LtcFitOptions {
