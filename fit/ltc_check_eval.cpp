@@ -23,7 +23,7 @@ M3 minv_of(const LtcCell& c) {
 }  // namespace
 
 LtcCell ltc_lookup(const LtcTable& t, double param, double cos_theta_v) {
-    const double rho = std::sqrt(ltc_alpha_of_param(t.dist, param));
+    const double rho = ltc_rho_of_alpha(t.dist, ltc_alpha_of_param(t.dist, param));
     const double u = (rho - t.rho_min) / (t.rho_max - t.rho_min);
     const double w = std::sqrt(std::max(0.0, 1 - cos_theta_v));
     // Texel centres at k / (size - 1): the sampler's texel-space coordinate is u (size - 1).
@@ -41,7 +41,8 @@ LtcCell ltc_lookup(const LtcTable& t, double param, double cos_theta_v) {
     // the case's; include/arealight/ltc_table.hpp).
     const double s0 = ltc_matrix_scale(t, i0), s1 = ltc_matrix_scale(t, i1);
     const double alpha =
-        ltc_alpha_scaled(t.dist) ? std::pow(std::clamp(rho, t.rho_min, t.rho_max), 2) : 1.0;
+        ltc_alpha_scaled(t.dist) ? ltc_alpha_of_rho(t.dist, std::clamp(rho, t.rho_min, t.rho_max))
+                                 : 1.0;
     auto mix_scaled = [&](double LtcCell::*m, double k0, double k1) {
         const double a = t.at(i0, j0).*m * k0 * (1 - fu) + t.at(i1, j0).*m * k1 * fu;
         const double b = t.at(i0, j1).*m * k0 * (1 - fu) + t.at(i1, j1).*m * k1 * fu;

@@ -57,12 +57,22 @@ bool parse_int(std::string_view s, int& x) {
 
 }  // namespace
 
+int ltc_axis_power(Distribution d) { return d == Distribution::Beckmann ? 3 : 2; }
+
+double ltc_rho_of_alpha(Distribution d, double alpha) {
+    return ltc_axis_power(d) == 3 ? std::cbrt(alpha) : std::sqrt(alpha);
+}
+
+double ltc_alpha_of_rho(Distribution d, double rho) {
+    return ltc_axis_power(d) == 3 ? rho * rho * rho : rho * rho;
+}
+
 void ltc_rho_range(Distribution d, double& rho_min, double& rho_max) {
     if (d == Distribution::Phong || d == Distribution::Blinn) {
-        rho_min = std::sqrt(ltcfit::ltc_alpha_of_param(d, 100000.0));
-        rho_max = std::sqrt(ltcfit::ltc_alpha_of_param(d, 1.0));
+        rho_min = ltc_rho_of_alpha(d, ltcfit::ltc_alpha_of_param(d, 100000.0));
+        rho_max = ltc_rho_of_alpha(d, ltcfit::ltc_alpha_of_param(d, 1.0));
     } else {
-        rho_min = std::sqrt(0.001);
+        rho_min = ltc_rho_of_alpha(d, 0.001);
         rho_max = 1.0;
     }
 }
@@ -84,9 +94,10 @@ double ltc_cell_rho(const LtcTable& t, int i) {
     return t.rho_min + u * (t.rho_max - t.rho_min);
 }
 
+double ltc_cell_alpha(const LtcTable& t, int i) { return ltc_alpha_of_rho(t.dist, ltc_cell_rho(t, i)); }
+
 double ltc_matrix_scale(const LtcTable& t, int i) {
-    const double rho = ltc_cell_rho(t, i);
-    return ltc_alpha_scaled(t.dist) ? rho * rho : 1.0;
+    return ltc_alpha_scaled(t.dist) ? ltc_cell_alpha(t, i) : 1.0;
 }
 
 double ltc_cell_cos_theta(int size, int j) {
@@ -182,7 +193,9 @@ std::optional<LtcTable> parse_ltc_table(const std::string& text, const std::stri
             if (!have_rho_max) t.rho_max = hi;
             if (std::abs(t.rho_min - lo) > 1e-12 || std::abs(t.rho_max - hi) > 1e-12)
                 return fail("rho range [" + std::to_string(t.rho_min) + ", " +
-                            std::to_string(t.rho_max) + "] is not " + to_string(t.dist) + "'s");
+                            std::to_string(t.rho_max) + "] is not " + to_string(t.dist) +
+                            "'s (a table of another axis or version of arealight: refit it with "
+                            "this one's fit-ltc)");
             t.rho_min = lo;
             t.rho_max = hi;
             t.cells.resize(expected);

@@ -34,8 +34,9 @@ struct Diags {
 };
 
 double param_of_cell(Distribution d, const LtcTable& t, int i) {
+    // The axis (include/arealight/ltc_table.hpp): rho = alpha^(1/3) for beckmann, sqrt else.
     const double rho = ltc_cell_rho(t, i);
-    const double alpha = rho * rho;
+    const double alpha = d == Distribution::Beckmann ? rho * rho * rho : rho * rho;
     if (d == Distribution::Phong || d == Distribution::Blinn) return 2 / (alpha * alpha) - 2;
     return alpha;
 }
@@ -327,13 +328,13 @@ TEST_CASE("LTC: the table format round-trips and its errors name file and line",
     CHECK(back->command == t.command);
 
     // Line numbers of the text: 7 header lines, then cell k on line 8 + k.
-    auto replace_line = [&](int line, const std::string& with) {
-        std::string s = text;
+    auto replace_in = [](std::string s, int line, const std::string& with) {
         std::size_t pos = 0;
         for (int l = 1; l < line; ++l) pos = s.find('\n', pos) + 1;
         const std::size_t end = s.find('\n', pos);
         return s.substr(0, pos) + with + s.substr(end);
     };
+    auto replace_line = [&](int line, const std::string& with) { return replace_in(text, line, with); };
     struct Bad {
         std::string text, where, what;
     };
@@ -345,7 +346,11 @@ TEST_CASE("LTC: the table format round-trips and its errors name file and line",
         {replace_line(12, "1 1 1 0 1 0 0.5 0 0"), "x.txt:12:", "10 fields"},
         {replace_line(13, "1 1 1 0 1 0 0.5 0 0 0"), "x.txt:13:", "expected cell '2 1'"},
         {replace_line(13, "2 1 1 0 1 0 0.5 0 inf 0"), "x.txt:13:", "field 'K'"},
-        {replace_line(3, "# dist ggx"), "x.txt:9:", "one lobe"},
+        // GGX's table on its own axis (sqrt(alpha) from sqrt(0.001)) but with beckmann's K.
+        {replace_in(replace_line(3, "# dist ggx"), 5, "# rho_min 0.031622776601683791"), "x.txt:9:",
+         "one lobe"},
+        // A beckmann table of the sqrt(alpha) axis it had before its cube-root one.
+        {replace_line(5, "# rho_min 0.031622776601683791"), "x.txt:8:", "is not beckmann's"},
         {replace_line(16, ""), "x.txt:", "expected 9 cells, found 8"},
         {replace_line(4, "# size 0"), "x.txt:4:", "size"},
     };

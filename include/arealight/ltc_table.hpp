@@ -10,13 +10,14 @@
 //   Minv = [[a, 0, b], [0, c, 0], [d, 0, 1]] (rows), i.e.
 //   w_o = (a w.x + b w.z, c w.y, d w.x + w.z) before normalisation.
 // - Grid: texel (i, j) of a size x size table sits at
-//   u = i / (size - 1) (roughness: rho = rho_min + u (rho_max - rho_min), rho = sqrt(alpha);
-//                       phong and blinn use alpha = sqrt(2 / (N + 2))),
+//   u = i / (size - 1) (roughness: rho = rho_min + u (rho_max - rho_min), rho = alpha^(1/p),
+//                       p = ltc_axis_power: 3 for beckmann, 2 otherwise; phong and blinn
+//                       use alpha = sqrt(2 / (N + 2))),
 //   w = j / (size - 1) (view: cos theta_v = 1 - w^2).
 //   The shader samples at ((u, w) (size - 1) + 0.5) / size with linear filtering,
 //   so texel centres are exactly the fitted cells.
 // - Texture 0 (matrix): (a, b, c, d) per cell; for GGX (ltc_alpha_scaled) (alpha a,
-//   alpha b, alpha c, d), alpha = rho^2 the cell's, and the shader divides the filtered
+//   alpha b, alpha c, d), alpha = rho^p the cell's, and the shader divides the filtered
 //   (a, b, c) by the case's alpha (clamped to the grid's range): entries that grow as
 //   1 / alpha then interpolate as the lobe's width does (fit/ltc_fit.cpp: why GGX only).
 // - Texture 1 (amplitude): (A, B, K, S) per cell. Specular of a light region P is
@@ -69,20 +70,28 @@ LtcCell ltc_second_lobe(const LtcCell& c);
 struct LtcTable {
     Distribution dist = Distribution::Ggx;
     int size = 64;
-    double rho_min = 0, rho_max = 1;  // range of rho = sqrt(alpha) over u in [0, 1]
+    double rho_min = 0, rho_max = 1;  // range of rho = alpha^(1/p) over u in [0, 1]
     std::vector<LtcCell> cells;       // size * size, cell (i, j) at j * size + i
     std::string command;              // the command that produced it (the file's header)
 
     const LtcCell& at(int i, int j) const { return cells[static_cast<std::size_t>(j) * size + i]; }
 };
 
-// rho's range for a distribution: sqrt(alpha) for alpha in [0.001, 1] (ggx, beckmann), or
-// for N in [1, 100000] through alpha = sqrt(2 / (N + 2)) (phong, blinn): CONTRACT.md 2.
+// The roughness axis: rho = alpha^(1/p) with p = ltc_axis_power(d), 3 for beckmann (its
+// alphas reach 0.001, where sqrt(alpha)'s columns step by 2.2x in alpha: fit/ltc_fit.cpp),
+// 2 for the others (phong and blinn through alpha = sqrt(2 / (N + 2)) reach 0.0045 only).
+int ltc_axis_power(Distribution d);
+double ltc_rho_of_alpha(Distribution d, double alpha);
+double ltc_alpha_of_rho(Distribution d, double rho);
+
+// rho's range for a distribution: alpha in [0.001, 1] (ggx, beckmann), or N in [1, 100000]
+// through alpha = sqrt(2 / (N + 2)) (phong, blinn): CONTRACT.md 2.
 void ltc_rho_range(Distribution d, double& rho_min, double& rho_max);
 
 // The (roughness, view) of cell (i, j) of a size x size table. ltc_cell_cos_theta is the
 // grid's value (0 on the last row); the fit uses max(it, 1e-3) (fit/ltc_fit.cpp).
 double ltc_cell_rho(const LtcTable& t, int i);
+double ltc_cell_alpha(const LtcTable& t, int i);  // ltc_alpha_of_rho of ltc_cell_rho
 // The factor the matrix texture applies to (a, b, c) of column i: its alpha where
 // ltc_alpha_scaled, else 1.
 double ltc_matrix_scale(const LtcTable& t, int i);

@@ -46,13 +46,16 @@ const rvec3 AL_LTC_SECOND = rvec3(AL_R(0.83333333333333333), AL_R(0.833333333333
 #endif
 
 // Grid of the tables (include/arealight/ltc_table.hpp, ltc_rho_range in
-// fit/ltc_table.cpp): 64 x 64 cells; rho = sqrt(alpha) spans the contract's
-// parameter range (alpha in [0.001, 1]; phong and blinn through alpha = sqrt(2 / (N + 2))
-// for N in [1, 1e5]).
+// fit/ltc_table.cpp): 64 x 64 cells; rho = sqrt(alpha) (beckmann: alpha^(1/3)) spans the
+// contract's parameter range (alpha in [0.001, 1]; phong and blinn through
+// alpha = sqrt(2 / (N + 2)) for N in [1, 1e5]).
 const real AL_LTC_SIZE = AL_R(64.0);
 #if defined(AL_DIST_PHONG) || defined(AL_DIST_BLINN)
 const real AL_LTC_RHO_MIN = AL_R(0.0668727776);  // (2 / 100002)^(1/4)
 const real AL_LTC_RHO_MAX = AL_R(0.9036020036);  // (2 / 3)^(1/4)
+#elif defined(AL_DIST_BECKMANN)
+const real AL_LTC_RHO_MIN = AL_R(0.1);  // 0.001^(1/3)
+const real AL_LTC_RHO_MAX = AL_R(1.0);
 #else
 const real AL_LTC_RHO_MIN = AL_R(0.0316227766);  // sqrt(0.001)
 const real AL_LTC_RHO_MAX = AL_R(1.0);
@@ -74,9 +77,21 @@ real al_ltc_alpha(real param) {
 #endif
 }
 
+// The table's axis rho of alpha (ltc_axis_power in include/arealight/ltc_table.hpp). Domain
+// alpha >= 0; fp32 pow's error (a few ulp) is far below a column's width.
+real al_ltc_rho(real alpha) {
+#ifdef AL_DIST_BECKMANN
+    // Cube root: Beckmann's alphas reach 0.001, where sqrt's columns step 2.2x in alpha and
+    // bilinear filtering between them loses the lobe's width (fit/ltc_fit.cpp).
+    return pow(max(alpha, AL_R(1e-9)), AL_R(0.33333333333333333));
+#else
+    return sqrt(alpha);
+#endif
+}
+
 // Texture coordinates of (rho, cos theta_v): texel centres are the fitted cells.
 vec2 al_ltc_uv(real param, real nv, real sin_v) {
-    real rho = sqrt(al_ltc_alpha(param));
+    real rho = al_ltc_rho(al_ltc_alpha(param));
     real u = clamp((rho - AL_LTC_RHO_MIN) / (AL_LTC_RHO_MAX - AL_LTC_RHO_MIN), AL_R(0.0),
                    AL_R(1.0));
     // sqrt(1 - cos) from the sine where the view is within 90 degrees of n: near n,
