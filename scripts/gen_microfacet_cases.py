@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Seeded random microfacet polygon cases (arealight-cases/1) for accuracy measurements.
 
-Usage: gen_microfacet_cases.py COUNT SEED OUT.json [--kind hard|typical]
+Usage: gen_microfacet_cases.py COUNT SEED OUT.json [--kind hard|typical|near-horizon]
 
 blinn, beckmann and ggx materials lit by convex 3- to 8-gons, counter-clockwise
 toward the emitting side; a quarter of the lights are two-sided, half of those
@@ -22,6 +22,11 @@ and the distributions within each kind; away from sharp and rough, alpha is
 log-uniform in [0.001, 1] and N in [1, 1e5].
 --kind typical: n.v in [0.2, 1], lights about r (some crossing the horizon),
 alpha log-uniform in [0.05, 1], N in [2, 1000].
+--kind near-horizon: lights wholly above the horizon, 2 to 12 degrees in angular
+radius, their centres 1 to 20 degrees above it at any azimuth (off the lobe as
+often as on it), n.v in [0.02, 1], alpha log-uniform in [0.03, 0.8] (N through
+alpha = sqrt(2 / (N + 2))): where an LTC's lobe keeps mass at the horizon that
+f (n.w) does not have (docs/ltc.md).
 
 Case ids name the kind, the distribution and the index: hard-grazing-ggx-17.
 """
@@ -152,6 +157,16 @@ def typical_geometry(rnd):
         if above(verts):
             return v, verts
 
+def near_horizon_geometry(rnd):
+    while True:
+        v, r = view(rnd, 0.02, 1.0)
+        el = math.radians(1 + 19*rnd.random())
+        az = 2*math.pi*rnd.random()
+        d = [math.cos(el)*math.cos(az), math.cos(el)*math.sin(az), math.sin(el)]
+        verts = light_about(rnd, d, math.radians(2), min(math.radians(12), 0.9*el + math.radians(1)))
+        if all(x[2] > 0 for x in verts):
+            return v, verts
+
 def material(rnd, dist, kind):
     if kind == "rough":
         lo_a, hi_a, lo_n, hi_n = 1.0, 1.0, 1.0, 1.0
@@ -161,6 +176,8 @@ def material(rnd, dist, kind):
         lo_a, hi_a, lo_n, hi_n = 0.001, 0.3, 20.0, 1e5
     elif kind == "typical":
         lo_a, hi_a, lo_n, hi_n = 0.05, 1.0, 2.0, 1000.0
+    elif kind == "near-horizon":
+        lo_a, hi_a, lo_n, hi_n = 0.03, 0.8, 2/0.8**2 - 2, 2/0.03**2 - 2
     else:
         lo_a, hi_a, lo_n, hi_n = 0.001, 1.0, 1.0, 1e5
     m = {"distribution": dist}
@@ -177,7 +194,7 @@ def main():
     ap.add_argument("count", type=int)
     ap.add_argument("seed", type=int)
     ap.add_argument("out")
-    ap.add_argument("--kind", choices=["hard", "typical"], default="hard")
+    ap.add_argument("--kind", choices=["hard", "typical", "near-horizon"], default="hard")
     args = ap.parse_args()
     rnd = random.Random(args.seed)
     cases = []
@@ -188,15 +205,15 @@ def main():
             dist = DISTRIBUTIONS[(i // len(HARD_KINDS)) % len(DISTRIBUTIONS)]
             v, verts = hard_geometry(rnd, kind)
         else:
-            kind = "typical"
+            kind = args.kind
             dist = DISTRIBUTIONS[i % len(DISTRIBUTIONS)]
-            v, verts = typical_geometry(rnd)
+            v, verts = typical_geometry(rnd) if kind == "typical" else near_horizon_geometry(rnd)
         verts = facing_origin(verts)
         two_sided = rnd.random() < 0.25
         if two_sided and rnd.random() < 0.5:
             verts = verts[::-1]
         R = random_rotation(rnd)
-        name = f"{kind}-{dist}-{i}" if kind == "typical" else f"hard-{kind}-{dist}-{i}"
+        name = f"hard-{kind}-{dist}-{i}" if args.kind == "hard" else f"{kind}-{dist}-{i}"
         cases.append({"id": name, "p": [0, 0, 0], "n": R([0, 0, 1]), "v": R(v),
                       "light": {"type": "polygon", "vertices": [R(x) for x in verts],
                                 "two_sided": two_sided},
