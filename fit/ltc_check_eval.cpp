@@ -40,9 +40,7 @@ LtcCell ltc_lookup(const LtcTable& t, double param, double cos_theta_v) {
     // (a, b, c) as the matrix texture holds them (GGX: times the cell's alpha, and back over
     // the case's; include/arealight/ltc_table.hpp).
     const double s0 = ltc_matrix_scale(t, i0), s1 = ltc_matrix_scale(t, i1);
-    const double alpha =
-        ltc_alpha_scaled(t.dist) ? ltc_alpha_of_rho(t.dist, std::clamp(rho, t.rho_min, t.rho_max))
-                                 : 1.0;
+    const double alpha = ltc_matrix_scale_at(t, rho);
     auto mix_scaled = [&](double LtcCell::*m, double k0, double k1) {
         const double a = t.at(i0, j0).*m * k0 * (1 - fu) + t.at(i1, j0).*m * k1 * fu;
         const double b = t.at(i0, j1).*m * k0 * (1 - fu) + t.at(i1, j1).*m * k1 * fu;

@@ -525,10 +525,10 @@ LtcCell fit_lobe(Distribution d, double alpha, double cos_v, const LtcCell* star
         const double rho = 0.5 * (ltc_cell_rho(grid, nb->i) + ltc_cell_rho(grid, nb->i + 1));
         alpha_i = ltc_matrix_scale(grid, nb->i);
         alpha_next = ltc_matrix_scale(grid, nb->i + 1);
-        const double alpha = ltc_alpha_of_rho(d, rho);
-        if (ltc_alpha_scaled(d)) alpha_mid = alpha;
+        alpha_mid = ltc_matrix_scale_at(grid, rho);
         mid_u = std::make_unique<LobeMetric>(
-            d, alpha, cos_v, halfway(cell1, alpha_i, *nb->next_u, alpha_next, alpha_mid));
+            d, ltc_alpha_of_rho(d, rho), cos_v,
+            halfway(cell1, alpha_i, *nb->next_u, alpha_next, alpha_mid));
     }
     if (nb && nb->prev_w) {
         const double w = (nb->j - 0.5) / (nb->size - 1);

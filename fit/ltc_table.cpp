@@ -8,6 +8,7 @@
 //   # rho_max 1
 //   # columns i j a b c d A B K error
 //   0 0 a b c d A B K error      (size * size lines, i fastest; K = 0: one lobe)
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -98,6 +99,11 @@ double ltc_cell_alpha(const LtcTable& t, int i) { return ltc_alpha_of_rho(t.dist
 
 double ltc_matrix_scale(const LtcTable& t, int i) {
     return ltc_alpha_scaled(t.dist) ? ltc_cell_alpha(t, i) : 1.0;
+}
+
+double ltc_matrix_scale_at(const LtcTable& t, double rho) {
+    return ltc_alpha_scaled(t.dist) ? ltc_alpha_of_rho(t.dist, std::clamp(rho, t.rho_min, t.rho_max))
+                                    : 1.0;
 }
 
 double ltc_cell_cos_theta(int size, int j) {

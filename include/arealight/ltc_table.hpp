@@ -93,8 +93,10 @@ void ltc_rho_range(Distribution d, double& rho_min, double& rho_max);
 double ltc_cell_rho(const LtcTable& t, int i);
 double ltc_cell_alpha(const LtcTable& t, int i);  // ltc_alpha_of_rho of ltc_cell_rho
 // The factor the matrix texture applies to (a, b, c) of column i: its alpha where
-// ltc_alpha_scaled, else 1.
+// ltc_alpha_scaled, else 1; and the shader's divisor of the filtered (a, b, c) at a lobe's
+// rho (its alpha, rho clamped to the table's range, or 1).
 double ltc_matrix_scale(const LtcTable& t, int i);
+double ltc_matrix_scale_at(const LtcTable& t, double rho);
 double ltc_cell_cos_theta(int size, int j);
 
 struct LtcFitOptions {
