@@ -59,9 +59,10 @@ inline CaseSet random_microfacet_polygons(std::uint64_t seed, int count, Distrib
 // 1/n.v) varies most across the D-weighted half vectors: a regular k-gon (k 4 to 8) about the
 // mirror direction r, tilted off it by up to 0.3 rad, 1 to 3 away, its circumradius 1.5 to
 // 3 times that (lit to the horizon where it crosses it); n.v uniform in [nv_lo, nv_hi], alpha
-// in [0.15, 0.6] log-uniform (blinn: N = 2 / alpha^2 - 2), f0 on every other case.
+// in [alpha_lo, alpha_hi] log-uniform (blinn: N = 2 / alpha^2 - 2), f0 on every other case.
 inline CaseSet lobe_filling_microfacet_polygons(std::uint64_t seed, int count, Distribution d,
-                                                double nv_lo = 0.15, double nv_hi = 0.9) {
+                                                double nv_lo = 0.15, double nv_hi = 0.9,
+                                                double alpha_lo = 0.15, double alpha_hi = 0.6) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> U(0, 1);
     CaseSet set;
@@ -80,7 +81,7 @@ inline CaseSet lobe_filling_microfacet_polygons(std::uint64_t seed, int count, D
             const double a = -2 * kPi_ * j / k;  // clockwise about dir
             verts.push_back(dist * dir + rad * (std::cos(a) * t1 + std::sin(a) * t2));
         }
-        const double alpha = 0.15 * std::exp(std::log(4.0) * U(rng));
+        const double alpha = alpha_lo * std::exp(std::log(alpha_hi / alpha_lo) * U(rng));
         const double p = d == Distribution::Blinn ? 2 / (alpha * alpha) - 2 : alpha;
         Case c = polygon_case("filling-" + std::to_string(i), verts, n, v, d, p);
         if (i % 2 == 1) {

@@ -170,14 +170,16 @@ constexpr double kBackendTol = 2e-4;
 
 // GGX's specular factor averaged over the spread of the D-weighted half vectors (al_mf_end,
 // AL_PMF_SPREAD) against W at one point, on 40 lights that hold the whole lobe: specular
-// relL2 4.7e-2 / 5.1e-2 / 5.2e-2 (lorentz / pearson / ellipsoid, both backends alike) where
-// W at one point measured 7.6e-2 / 7.5e-2 / 7.5e-2 (W is concave: one point overestimates
-// its mean). The bar lies between the two, so losing the spread fails it.
+// relL2 3.8e-2 / 4.2e-2 / 4.3e-2 (lorentz / pearson / ellipsoid, both backends alike; 4.7e-2
+// / 5.1e-2 / 5.2e-2 with one spread for the whole mixture) where W at one point measured
+// 7.6e-2 / 7.5e-2 / 7.5e-2 (W is concave: one point overestimates its mean). The bar lies
+// between the two, so losing the spread fails it.
 constexpr double kFillingSpecularTol = 6.5e-2;
 
 // The same lights at grazing views, n.v in [1e-3, 0.05] (AL_PMF_SPREAD's shift of h* to the
-// mean of the lobe's lit half): specular relL2 0.145 / 0.145 / 0.146 (pearson / ellipsoid /
-// lorentz) where h* = n measured 0.43 / 0.43 / 0.43 with the spread and 0.44 without it.
+// mean of the lobe's lit half): specular relL2 0.152 / 0.152 / 0.155 (pearson / ellipsoid /
+// lorentz; 0.145 / 0.145 / 0.146 with one spread for the whole mixture) where h* = n
+// measured 0.43 / 0.43 / 0.43 with the spread and 0.44 without it.
 constexpr double kGrazingFillingSpecularTol = 0.2;
 
 // The specular relL2 of a distribution's three peak methods on cases, both backends, against
@@ -209,6 +211,23 @@ TEST_CASE("microfacet peak methods: GGX's factor at grazing views under lights t
     check_peak_specular(Distribution::Ggx,
                         lobe_filling_microfacet_polygons(4343, 40, Distribution::Ggx, 1e-3, 0.05),
                         kGrazingFillingSpecularTol);
+}
+
+// Glossy GGX lobes (alpha 0.02 to 0.1) under the same lights, which cross the horizon: most
+// of D's mass is the narrow lobes' about h*, but the wide lobes and the constant of the
+// moment mixture (GGX's tail) spread over the whole light, where W differs (G2 falls towards
+// the horizon). al_mf_end gives each component its own representative half vector and
+// spread: specular relL2 2.6e-3 / 2.4e-3 / 2.4e-3 (lorentz / pearson / ellipsoid, both
+// backends alike) where one point and one spread for the whole mixture measured 4.4e-3 /
+// 4.2e-3 / 4.1e-3. The bar lies between the two.
+constexpr double kGlossyFillingSpecularTol = 3.3e-3;
+
+TEST_CASE("microfacet peak methods: GGX's factor per mixture component under lights across the horizon",
+          "[shading][vulkan][peakmf]") {
+    check_peak_specular(
+        Distribution::Ggx,
+        lobe_filling_microfacet_polygons(4545, 40, Distribution::Ggx, 0.3, 0.9, 0.02, 0.1),
+        kGlossyFillingSpecularTol);
 }
 
 // Beckmann's h* at grazing views (its Gaussian slopes' cut mean), on the same kind of lights:

@@ -105,6 +105,19 @@
 //   n.v = 4e-3, 8.3e-2 -> 0.10) and lorentz on the glossy ellipsoids (3.6e-3 -> 1.1e-2: its
 //   ndf is 2% high on one case, which W 3% low had cancelled). Cost +120 cycles a wave in all
 //   (ggx ellipsoid 24 876 -> 24 994, 50.2x its point light).
+//   Per component (2026-12-07): the mixture's wide lobes and constant are GGX's tail, spread
+//   over the whole light, so each of the four components takes its own blend weight beta_j
+//   (its own width m_j) and its own spread; one point and one spread for the mixture held
+//   the tail's W at the lobe's. Pearson specular relL2 typical / horizon / glossy / stress
+//   1.32e-2 / 1.60e-2 / 7.07e-3 / 2.78e-2 -> 7.9e-3 / 5.9e-3 / 7.0e-3 / 2.4e-2 (lorentz
+//   1.25e-2 / 2.48e-2 -> 8.5e-3 / 1.6e-2), disk horizon 6.4e-2 -> 3.3e-2; the GGX third of
+//   `scripts/gen_microfacet_cases.py 3000 12 X --kind typical` 2.92e-2 -> 2.51e-2, of
+//   `--kind near-horizon` (1800 21) 3.00e-2 -> 3.29e-2 (one case, -4.6% -> -5.1%). Taken
+//   alone, the per-component spread (one h* for all) gave horizon 1.37e-2 and the
+//   per-component h* (one spread) typical 1.22e-2; the pull of beta_j back to the
+//   mixture's beta at low n.v (AL_PMF_VIEW2) keeps grazing views as they were (own hard set
+//   0.138 without it, 9.9e-2 with, as before). Cost +1.7% (pearson 23 881 -> 24 283 cycles
+//   a wave, 48.8x its point light; 16 evaluations of G2 instead of 4, outside the edge loop).
 // - n.v <= 0 (specular 0, outside the method's range): half vectors below n's horizon
 //   are projected onto it, so the chords follow the horizon there.
 // - A chord shorter than 1e-7 rad adds nothing but its sweep to the total: its edge
@@ -115,7 +128,7 @@
 //
 // Measured (lavapipe; the CPU mirror agrees), default keys, specular relL2 typical /
 // horizon / glossy: blinn ellipsoid 6.5e-3 / 3.8e-2 / 2.9e-3, beckmann 9.6e-3 / 1.7e-2
-// / 6.8e-3, ggx 1.3e-2 / 1.6e-2 / 7.1e-3; no missing or bad value on any set. The
+// / 6.8e-3, ggx 8.1e-3 / 5.9e-3 / 7.0e-3; no missing or bad value on any set. The
 // paper's recipe (fit=paper, Algorithm 1, closest): 3.4e-2 / 0.34 / 2.1e-2, 6.4e-2 /
 // 9.8e-2 / 5.1e-2, 7.0e-2 / 8.8e-2 / 2.6e-2. What is left: the specular factor (W at
 // one point; grazing views, e.g. beckmann at n.v = 1e-3: -11%), Beckmann's model at
@@ -142,8 +155,12 @@
 // and h*'s shift towards the lobe's lit half is half on at n.v = 0.05 (about 3 degrees from
 // grazing).
 #define AL_PMF_GRAZING2 AL_R(0.0025)
-// GGX's specular factor (factor=blend) averages W over the spread of its D-weighted
-// h-region (al_mf_end); the Gaussian-tailed lobes and factor=closest keep W at one point.
+// (n.v)^2 at which GGX's per-component blend weights are halfway back to the distribution's
+// (al_mf_end): about 18 degrees from grazing.
+#define AL_PMF_VIEW2 AL_R(0.1)
+// GGX's specular factor (factor=blend) averages W over the spread of each mixture
+// component's D-weighted h-region (al_mf_end); the Gaussian-tailed lobes and
+// factor=closest keep W at one point.
 #if defined(AL_DIST_GGX) && !defined(AL_FIT_PAPER) && defined(AL_FACTOR_BLEND)
 #define AL_PMF_SPREAD
 #endif
@@ -527,19 +544,61 @@ real al_pmf_g2_hv(AlMoments M, real hv, real nh) {
     return al_smith_g2(lw, M.lv) * max(hv, AL_R(0.0));
 }
 
+#ifdef AL_PMF_SPREAD
+// W = G2 (h.v) F / (n.v) averaged over four points hs +- sqrt(2) s t1, t2 (t1 towards n)
+// for one component of D of width^2 m2 (m2 < 0: unbounded, the constant): the spread
+// s^2 = 1 / (4 pi / Omega_h + 2 / m2) of its D-weighted h-region (the h-polygon's size and
+// the width, whichever is smaller), shrunk within ~3 degrees of grazing views, where
+// W ~ 1/(n.v) is not smooth on the lobe's scale. Points whose w falls below the horizon
+// count with W = 0 (G2 = 0 there). Measured and not taken: W continued as an odd function
+// of n.w below the horizon (exact where W is linear across it): public horizon set
+// specular p95 9.8e-2 -> 7.7e-2 (pearson) but relL2 1.6e-2 -> 1.9e-2, and disk horizon
+// 6.1e-2 -> 0.19 (lobes the horizon cuts, whose D-weighted W it underestimates).
+real al_pmf_w_spread(AlMoments M, rvec3 hs, real m2) {
+    real nv2 = M.nv * M.nv;
+    real omega = max(M.omega_h, AL_R(0.0));
+    real inv_m2 = m2 > AL_R(0.0) ? AL_R(2.0) / m2 : AL_R(0.0);
+    real s2 = nv2 * omega / max((nv2 + AL_PMF_GRAZING2) * (AL_R(4.0) * AL_PI + inv_m2 * omega),
+                                AL_R(1e-30));
+    real off2 = AL_R(2.0) * s2;
+    // The points h = (h* + off t) / |h* + off t| for unit t orthogonal to h*, |h* + off t|^2 =
+    // 1 + off^2: t1 = (n - (n.h*) h*) / L and t2 = (h* x n) / L, L = |h* x n|, so n.t1 = L,
+    // n.t2 = 0, v.t1 = (n.v - (n.h*)(h*.v)) / L; near h* = n, t1 along v's tangent part and
+    // t2 across it (v.t2 = 0).
+    real k = inversesqrt(AL_R(1.0) + off2);
+    real hv0 = dot(hs, M.v), nh0 = dot(hs, M.n);
+    real hv = hv0 * k, nh = nh0 * k;
+    k *= sqrt(off2);
+    rvec3 c = cross(hs, M.n);
+    real L = length(c);
+    bool framed = L > AL_R(1e-6);
+    real kl = k / max(L, AL_R(1e-6));
+    real dn1 = framed ? k * L : AL_R(0.0);
+    real dv1 = framed ? kl * (M.nv - nh0 * hv0) : k * sqrt(max((AL_R(1.0) - M.nv) * (AL_R(1.0) + M.nv), AL_R(0.0)));
+    real dv2 = framed ? kl * dot(c, M.v) : AL_R(0.0);
+    // F at h* alone: it varies over the spread far less than G2 (h.v) does.
+    return (al_pmf_g2_hv(M, hv + dv1, nh + dn1) + al_pmf_g2_hv(M, hv - dv1, nh - dn1) +
+            al_pmf_g2_hv(M, hv + dv2, nh) + al_pmf_g2_hv(M, hv - dv2, nh)) *
+           al_schlick(M.f0, hv0) / (AL_R(4.0) * M.nv);
+}
+#endif
+
 // (specular, ndf): the model's moments over the h-polygon, and specular as ndf times
 // W = G2(w*, v) (h*.v)/(n.v) F(h*.v) at one representative half vector h* (GGX: its mean
 // over four points about h*).
 rvec2 al_mf_end(AlMoments M) {
-    real ndf = M.mix.c0 * M.omega_h / AL_PI;
+    real ndf_c = M.mix.c0 * M.omega_h / AL_PI;
+    real ndf = ndf_c;
+    rvec3 ndf_j = rvec3(AL_R(0.0));
     for (int j = 0; j < AL_PMF_LOBES; ++j) {
         real size_near = M.size_all - M.size_far[j], sweep_near = M.sweep_all - M.sweep_far[j];
         real winding = al_winding(M.sweep_all, sweep_near, M.sweep_far[j], size_near,
                                   M.size_far[j]);  // about n (method/phong_edge.glsl)
         real N = M.mix.N[j];
         // w_j (N+2)/(2 pi) int (n.h)^N dh: (N+1)/(2 pi) int = (winding - sums) / (2 pi).
-        ndf += M.mix.w[j] * (N + AL_R(2.0)) / AL_TWO_PI *
-               ((winding - M.sums[j]) / (N + AL_R(1.0)) + M.sliver[j]);
+        ndf_j[j] = M.mix.w[j] * (N + AL_R(2.0)) / AL_TWO_PI *
+                   ((winding - M.sums[j]) / (N + AL_R(1.0)) + M.sliver[j]);
+        ndf += ndf_j[j];
     }
     ndf = max(ndf, AL_R(0.0));
     if (!M.specular_on) return rvec2(AL_R(0.0), ndf);
@@ -585,47 +644,34 @@ rvec2 al_mf_end(AlMoments M) {
 #endif
 #ifdef AL_FACTOR_BLEND
     real irr_len = length(M.irr);
-    if (irr_len > AL_R(0.0)) {
-        rvec3 hf = normalize(M.irr / irr_len + M.v);
-        hs = normalize(beta * hs + (AL_R(1.0) - beta) * hf);
-    }
+    bool hf_on = irr_len > AL_R(0.0);
+    rvec3 hf = hf_on ? normalize(M.irr / max(irr_len, AL_R(1e-30)) + M.v) : hs;
+#ifndef AL_PMF_SPREAD
+    hs = normalize(beta * hs + (AL_R(1.0) - beta) * hf);
+#endif
 #endif
 #ifdef AL_PMF_SPREAD
-    // GGX: W averaged over four points h* +- sqrt(2) s t1, t2 (t1 towards n), the spread
-    // s^2 = 1 / (4 pi / Omega_h + 2 / m^2) of the D-weighted h-region (the h-polygon's size
-    // and the lobe's width, whichever is smaller), shrunk within ~3 degrees of grazing views,
-    // where W ~ 1/(n.v) is not smooth on the lobe's scale. Points whose w falls below the
-    // horizon count with W = 0 (G2 = 0 there). Measured and not taken: W continued as an odd
-    // function of n.w below the horizon (exact where W is linear across it): public horizon
-    // set specular p95 9.8e-2 -> 7.7e-2 (pearson) but relL2 1.6e-2 -> 1.9e-2, and disk
-    // horizon 6.1e-2 -> 0.19 (lobes the horizon cuts, whose D-weighted W it underestimates).
-    real nv2 = M.nv * M.nv;
-    real omega = max(M.omega_h, AL_R(0.0));
-    real s2 = nv2 * omega * m2 / max((nv2 + AL_PMF_GRAZING2) * (AL_R(4.0) * AL_PI * m2 + AL_R(2.0) * omega),
-                                     AL_R(1e-30));
-    real off2 = AL_R(2.0) * s2;
-    // The points h = (h* + off t) / |h* + off t| for unit t orthogonal to h*, |h* + off t|^2 =
-    // 1 + off^2: t1 = (n - (n.h*) h*) / L and t2 = (h* x n) / L, L = |h* x n|, so n.t1 = L,
-    // n.t2 = 0, v.t1 = (n.v - (n.h*)(h*.v)) / L; near h* = n, t1 along v's tangent part and
-    // t2 across it (v.t2 = 0).
-    real k = inversesqrt(AL_R(1.0) + off2);
-    real hv0 = dot(hs, M.v), nh0 = dot(hs, M.n);
-    real hv = hv0 * k, nh = nh0 * k;
-    k *= sqrt(off2);
-    rvec3 c = cross(hs, M.n);
-    real L = length(c);
-    bool framed = L > AL_R(1e-6);
-    real kl = k / max(L, AL_R(1e-6));
-    real dn1 = framed ? k * L : AL_R(0.0);
-    real dv1 = framed ? kl * (M.nv - nh0 * hv0) : k * sqrt(max((AL_R(1.0) - M.nv) * (AL_R(1.0) + M.nv), AL_R(0.0)));
-    real dv2 = framed ? kl * dot(c, M.v) : AL_R(0.0);
-    // F at h* alone: it varies over the spread far less than G2 (h.v) does.
-    real W = (al_pmf_g2_hv(M, hv + dv1, nh + dn1) + al_pmf_g2_hv(M, hv - dv1, nh - dn1) +
-              al_pmf_g2_hv(M, hv + dv2, nh) + al_pmf_g2_hv(M, hv - dv2, nh)) *
-             al_schlick(M.f0, hv0) / (AL_R(4.0) * M.nv);
+    // GGX: each component of the mixture, the three Blinn lobes (width^2 m_j^2 = 2 / (N_j + 2))
+    // and the constant (m = infinity: beta 0, the light's point), gets its own blend weight
+    // beta_j and its own spread: a wide component's D-weighted half vectors sit about the
+    // light's direction and spread over the whole h-region, a narrow one's about the lobe's
+    // point (header: factor=blend, GGX). A lobe's beta_j moves back to the distribution's
+    // beta by AL_PMF_VIEW2 / (AL_PMF_VIEW2 + (n.v)^2) as views turn grazing, where W ~ 1/(n.v)
+    // bends across a wide component's spread; the constant stays at the light's point
+    // (pulled too, it measured public stress 2.4e-2 -> 2.9e-2, sphere typical 1.46e-2 ->
+    // 1.61e-2).
+    real pull = AL_PMF_VIEW2 / (AL_PMF_VIEW2 + M.nv * M.nv);
+    real spec = ndf_c * al_pmf_w_spread(M, hf, AL_R(-1.0));
+    for (int j = 0; j < AL_PMF_LOBES; ++j) {
+        real mj2 = AL_R(2.0) / (M.mix.N[j] + AL_R(2.0));
+        real bj = M.omega / max(M.omega + AL_R(4.0) * AL_PI * mj2, AL_R(1e-30));
+        bj += (beta - bj) * pull;
+        spec += ndf_j[j] * al_pmf_w_spread(M, normalize(bj * hs + (AL_R(1.0) - bj) * hf), mj2);
+    }
+    return rvec2(max(spec, AL_R(0.0)), ndf);
 #else
     real hv = dot(hs, M.v);
     real W = al_pmf_g2_hv(M, hv, dot(hs, M.n)) * al_schlick(M.f0, hv) / M.nv;
-#endif
     return rvec2(ndf * W, ndf);
+#endif
 }
