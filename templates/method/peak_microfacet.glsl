@@ -128,7 +128,7 @@
 //
 // Measured (lavapipe; the CPU mirror agrees), default keys, specular relL2 typical /
 // horizon / glossy: blinn ellipsoid 6.5e-3 / 3.8e-2 / 2.9e-3, beckmann 9.6e-3 / 1.7e-2
-// / 6.8e-3, ggx 8.1e-3 / 5.9e-3 / 7.0e-3; no missing or bad value on any set. The
+// / 6.8e-3, ggx 8.1e-3 / 5.9e-3 / 7.1e-3; no missing or bad value on any set. The
 // paper's recipe (fit=paper, Algorithm 1, closest): 3.4e-2 / 0.34 / 2.1e-2, 6.4e-2 /
 // 9.8e-2 / 5.1e-2, 7.0e-2 / 8.8e-2 / 2.6e-2. What is left: the specular factor (W at
 // one point; grazing views, e.g. beckmann at n.v = 1e-3: -11%), Beckmann's model at
