@@ -213,8 +213,8 @@ TEST_CASE("microfacet peak methods: GGX's factor at grazing views under lights t
                         kGrazingFillingSpecularTol);
 }
 
-// Glossy GGX lobes (alpha 0.02 to 0.1) under the same lights, which cross the horizon: most
-// of D's mass is the narrow lobes' about h*, but the wide lobes and the constant of the
+// Glossy GGX lobes (alpha 0.02 to 0.1) under the same lights, most of which cross the horizon:
+// most of D's mass is the narrow lobes' about h*, but the wide lobes and the constant of the
 // moment mixture (GGX's tail) spread over the whole light, where W differs (G2 falls towards
 // the horizon). al_mf_end gives each component its own representative half vector and
 // spread: specular relL2 2.6e-3 / 2.4e-3 / 2.4e-3 (lorentz / pearson / ellipsoid, both
