@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "arealight/generator.hpp"
 #include "arealight/ltc_table.hpp"
 
 using namespace arealight;
@@ -168,6 +169,55 @@ TEST_CASE("LTC: the builtin tables are complete, finite and name their command",
             CHECK(c.b == 0);
             CHECK(c.d == 0);
             CHECK(c.a == Approx(c.c).epsilon(1e-8));
+        }
+    }
+}
+
+// The shader's texture coordinate (templates/method/ltc.glsl) restates each table's axis range
+// as AL_LTC_RHO_MIN / AL_LTC_RHO_MAX, printed to 10 significant digits.
+constexpr double kRhoConstTol = 1e-9;
+
+TEST_CASE("LTC: the shader's axis range is each table's", "[ltc]") {
+    const std::string* text = template_text("templates/method/ltc.glsl");
+    REQUIRE(text != nullptr);
+    // The constants in their order in the template, with the preprocessor line that selects
+    // each pair.
+    std::vector<std::string> guards;
+    std::vector<double> lo, hi;
+    std::string prev;
+    std::size_t pos = 0;
+    while (pos < text->size()) {
+        std::size_t end = text->find('\n', pos);
+        if (end == std::string::npos) end = text->size();
+        const std::string line = text->substr(pos, end - pos);
+        pos = end + 1;
+        for (const char* name : {"AL_LTC_RHO_MIN", "AL_LTC_RHO_MAX"}) {
+            const std::string head = std::string("const real ") + name + " = AL_R(";
+            if (line.rfind(head, 0) != 0) continue;
+            const double x = std::stod(line.substr(head.size()));
+            if (std::string(name) == "AL_LTC_RHO_MIN") {
+                guards.push_back(prev);
+                lo.push_back(x);
+            } else {
+                hi.push_back(x);
+            }
+        }
+        prev = line;
+    }
+    REQUIRE(guards ==
+            std::vector<std::string>{"#if defined(AL_DIST_PHONG) || defined(AL_DIST_BLINN)",
+                                     "#elif defined(AL_DIST_BECKMANN)", "#else"});
+    REQUIRE(hi.size() == 3);
+    const std::vector<std::vector<Distribution>> branches = {
+        {Distribution::Phong, Distribution::Blinn}, {Distribution::Beckmann}, {Distribution::Ggx}};
+    for (std::size_t k = 0; k < branches.size(); ++k) {
+        for (Distribution d : branches[k]) {
+            double rho_min, rho_max;
+            ltc_rho_range(d, rho_min, rho_max);
+            INFO(to_string(d) << ": shader " << lo[k] << " .. " << hi[k] << ", table "
+                              << rho_min << " .. " << rho_max);
+            CHECK(std::abs(lo[k] - rho_min) <= kRhoConstTol * rho_min);
+            CHECK(std::abs(hi[k] - rho_max) <= kRhoConstTol * rho_max);
         }
     }
 }

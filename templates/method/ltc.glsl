@@ -51,7 +51,7 @@ const rvec3 AL_LTC_SECOND = rvec3(AL_R(0.83333333333333333), AL_R(0.833333333333
 // alpha = sqrt(2 / (N + 2)) for N in [1, 1e5]).
 const real AL_LTC_SIZE = AL_R(64.0);
 #if defined(AL_DIST_PHONG) || defined(AL_DIST_BLINN)
-const real AL_LTC_RHO_MIN = AL_R(0.0668727776);  // (2 / 100002)^(1/4)
+const real AL_LTC_RHO_MIN = AL_R(0.0668736961);  // (2 / 100002)^(1/4)
 const real AL_LTC_RHO_MAX = AL_R(0.9036020036);  // (2 / 3)^(1/4)
 #elif defined(AL_DIST_BECKMANN)
 const real AL_LTC_RHO_MIN = AL_R(0.1);  // 0.001^(1/3)
