@@ -35,9 +35,7 @@ struct Diags {
 };
 
 double param_of_cell(Distribution d, const LtcTable& t, int i) {
-    // The axis (include/arealight/ltc_table.hpp): rho = alpha^(1/3) for beckmann, sqrt else.
-    const double rho = ltc_cell_rho(t, i);
-    const double alpha = d == Distribution::Beckmann ? rho * rho * rho : rho * rho;
+    const double alpha = ltc_alpha_of_rho(d, ltc_cell_rho(t, i));
     if (d == Distribution::Phong || d == Distribution::Blinn) return 2 / (alpha * alpha) - 2;
     return alpha;
 }
