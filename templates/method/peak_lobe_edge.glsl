@@ -1,5 +1,5 @@
 // Phong's per-arc sums on a polygon by peak functions (method/peak_phong.glsl), with
-// two departures where the fits fail (fit=tuned only; fit=paper fits everything):
+// departures where the fits fail (fit=tuned only; fit=paper fits everything):
 // - N below AL_PEAK_RULE_BELOW: the whole arc by the Gauss rule of
 //   method/phong_edge_rule.glsl at 6 nodes (common/gauss_legendre6.glsl). A low-N lobe is
 //   wide, so lights near the horizon see a specular moment that is a small difference of
@@ -20,8 +20,21 @@
 // 600 7 --kind horizon-peak) 2.39e-3 -> 2.26e-3 (4 nodes: 2.96e-3; 5: 2.44e-3). GPU cost
 // (navi21): lorentz 7 239 -> 6 721 cycles a wave, both arms of the branch counted.
 // - t_(N+1) and t_N from one fit (al_peak_edge_terms, method/peak_phong.glsl; fit=tuned).
+// - At N >= 32, arcs whose great circle misses the lobe's core (N s^2 > AL_PEAK_RULE_CORE:
+//   s beyond half the lobe's width N^-1/2) but which the lobe still reaches (x^(N+1) >= 1e-2
+//   somewhere on the arc): the rule as well, with the closed-form z. On such an arc g is the
+//   azimuth's Lorentzian of width s times the lobe's Gaussian of width N^-1/2, a Voigt-like
+//   shape none of the three families follows, and with r outside the light (a glossy lobe
+//   beside a light's edge) the result is that arc's term alone: fitted, it came out +3% to +5%
+//   (pub-degenerate-grid-sphere-phong-031, N = 128, the lobe 2.2 widths outside the rim:
+//   +4.7%). The fits keep what they model, arcs through the core and arcs in the far tail
+//   (the latter under al_tail_bound). Specular relL2 before -> after, pearson, CPU mirror,
+//   public typical / horizon / glossy / degenerate: polygon 2.5e-3 / 5.9e-4 / 3.2e-3 / 3.8e-3
+//   -> 1.9e-4 / 8.5e-5 / 8.1e-4 / 1.0e-3, sphere degenerate 2.8e-2 -> 7.1e-4 (docs/methods.md
+//   has every method and light). GPU cost (navi21): pearson 6 801 -> 6 869 cycles a wave.
 // Domain: real N >= 1, any arc.
 #define AL_PEAK_RULE_BELOW AL_R(32.0)
+#define AL_PEAK_RULE_CORE AL_R(0.25)
 
 // Per-arc sums for the arc a -> b with inward unit normal m (method/phong_edge.glsl), the
 // same quantities as the exact method's.
@@ -30,16 +43,22 @@ AlLobeEdge al_lobe_edge(rvec3 a, rvec3 b, rvec3 m, rvec3 r, rvec3 n, real N) {
     // One frame serves both regimes (they differ only in the far test's threshold).
     bool low = N < AL_PEAK_RULE_BELOW;
     AlEdgeFrame E = al_edge_frame(a, b, m, r, N, low ? AL_R(-6.9) : AL_PEAK_LOG_FAR);
-    if (low) return al_lobe_sums(E, al_lobe_rule(E, N), n, m);  // the exact method's forms
+    bool rim = N * E.s * E.s > AL_PEAK_RULE_CORE &&
+               (N + AL_R(1.0)) * al_arc_log_x_max(E) > AL_R(-4.6);
+    rvec3 t;
+    if (low || rim) {
+        t = al_lobe_rule(E, N);  // the exact method's forms
+    } else {
+        t = rvec3(al_peak_edge_terms(E, al_arc_shared(E), N, E.far_edge), AL_R(0.0));
+    }
+    if (!low) t.z = al_lobe_z(E, AL_R(0.5) * al_log1p(-min(E.s * E.s, AL_R(1.0))), N);
+    return al_lobe_sums(E, t, n, m);
 #else
     AlEdgeFrame E = al_edge_frame(a, b, m, r, N, AL_PEAK_LOG_FAR);
     E.far_edge = false;  // the paper fits the near form everywhere
-#endif
-    bool far_edge = E.far_edge;
     AlArcShared S = al_arc_shared(E);
-#ifdef AL_FIT_PAPER
-    real t1 = al_peak_edge_term(E, S, N + AL_R(1.0), far_edge);
-    real t0 = al_peak_edge_term(E, S, N, far_edge);
+    real t1 = al_peak_edge_term(E, S, N + AL_R(1.0), false);
+    real t0 = al_peak_edge_term(E, S, N, false);
     // x^N: max c^N, min 0, exact half width cos^2 tau_w = 2^(-2/N), where g = c^N / 2;
     // the tail sample at tan(tau_t) = 2 tan(tau_w).
     real lc = S.lc;
@@ -53,14 +72,6 @@ AlLobeEdge al_lobe_edge(rvec3 a, rvec3 b, rvec3 m, rvec3 r, rvec3 n, real N) {
     F.tt2 = AL_R(4.0) * F.tw2;
     F.gt = al_exp(N * (lc - AL_R(0.5) * al_log1p(F.tt2)));
     real tz = al_peak_integral(E.ag, E.af, E.bg, E.bf, S.ta, S.dtau, F);
-#else
-    rvec2 tt = al_peak_edge_terms(E, S, N, far_edge);
-    real t1 = tt.x, t0 = tt.y;
-    real tz = al_lobe_z(E, S.lc, N);
+    return al_lobe_sums(E, rvec3(t1, t0, tz), n, m);
 #endif
-    AlLobeEdge e;
-    e.near_edge = !far_edge;
-    real sgn = far_edge ? AL_R(1.0) : AL_R(-1.0);
-    e.sums = rvec3(sgn * E.rm * t1, sgn * E.rm * t0, dot(n, m) * tz);
-    return e;
 }
