@@ -62,7 +62,9 @@
 // and 6-node low-N rule, and one fit for both exponents, al_peak_edge_terms): lorentz 6 295
 // (13.8x), fit=paper 5 089 (11.1x); pearson 6 785 (14.8x), fit=paper 6 937 (15.2x); ellipsoid
 // 6 800 (14.9x), fit=paper 7 236 (15.8x): one edge loop, counted by ACO as 8 iterations of
-// ~800 cycles.
+// ~800 cycles. 2026-12-08, with the rule on the edges between the lobe's core and its tail
+// (method/peak_lobe_edge.glsl): lorentz 6 380 (14.0x), pearson 6 869 (15.0x), ellipsoid
+// 6 884 (15.1x).
 
 #define AL_PEAK_LOG_FAR AL_R(-2.3)
 // Integral over the arc of the ellipse's Q = a cos^2 / (sin^2 + a cos^2) =
