@@ -21,20 +21,24 @@
 // (navi21): lorentz 7 239 -> 6 721 cycles a wave, both arms of the branch counted.
 // - t_(N+1) and t_N from one fit (al_peak_edge_terms, method/peak_phong.glsl; fit=tuned).
 // - At N >= 32, arcs whose great circle misses the lobe's core (N s^2 > AL_PEAK_RULE_CORE:
-//   s beyond half the lobe's width N^-1/2) but which the lobe still reaches (x^(N+1) >= 1e-2
-//   somewhere on the arc): the rule as well, with the closed-form z. On such an arc g is the
-//   azimuth's Lorentzian of width s times the lobe's Gaussian of width N^-1/2, a Voigt-like
-//   shape none of the three families follows, and with r outside the light (a glossy lobe
-//   beside a light's edge) the result is that arc's term alone: fitted, it came out +3% to +5%
-//   (pub-degenerate-grid-sphere-phong-031, N = 128, the lobe 2.2 widths outside the rim:
-//   +4.7%). The fits keep what they model, arcs through the core and arcs in the far tail
-//   (the latter under al_tail_bound). Specular relL2 before -> after, pearson, CPU mirror,
-//   public typical / horizon / glossy / degenerate: polygon 2.5e-3 / 5.9e-4 / 3.2e-3 / 3.8e-3
-//   -> 1.9e-4 / 8.5e-5 / 8.1e-4 / 1.0e-3, sphere degenerate 2.8e-2 -> 7.1e-4 (docs/methods.md
-//   has every method and light). GPU cost (navi21): pearson 6 801 -> 6 869 cycles a wave.
+//   s beyond a third of the lobe's width N^-1/2) but which the lobe still reaches
+//   (x^(N+1) >= 1e-2 somewhere on the arc): the rule as well, with the closed-form z. On
+//   such an arc g is the azimuth's Lorentzian of width s times the lobe's Gaussian of width
+//   N^-1/2, a Voigt-like shape none of the three families follows, and with r outside the
+//   light (a glossy lobe beside a light's edge) the result is that arc's term alone: fitted,
+//   it came out +3% to +5% (pub-degenerate-grid-sphere-phong-031, N = 128, the lobe 2.2
+//   widths outside the rim: +4.7%). The fits keep what they model: arcs whose circle passes
+//   through the core (s -> 0: g = (1 - cos^k tau) / sin^2 tau, a peak with a Lorentzian
+//   tail) and arcs in the far tail (under al_tail_bound). Specular relL2 before -> after,
+//   pearson, CPU mirror, public typical / horizon / glossy / degenerate: polygon 2.5e-3 /
+//   5.9e-4 / 3.2e-3 / 3.8e-3 -> 1.3e-4 / 8.5e-5 / 1.0e-4 / 2.3e-5, sphere degenerate 2.8e-2
+//   -> 6.5e-4 (docs/methods.md has every method and light). The core's bound, N s^2 at 1
+//   / 0.25 / 0.1: typical 1.3e-3 / 1.9e-4 / 1.3e-4, degenerate 3.5e-3 / 1.0e-3 / 2.3e-5
+//   (lorentz 1.4e-2 / 7.2e-3 / 3.6e-5); 0.1 taken. GPU cost (navi21): pearson 6 801 -> 6 869
+//   cycles a wave, the rule's branch already there for N < 32.
 // Domain: real N >= 1, any arc.
 #define AL_PEAK_RULE_BELOW AL_R(32.0)
-#define AL_PEAK_RULE_CORE AL_R(0.25)
+#define AL_PEAK_RULE_CORE AL_R(0.1)
 
 // Per-arc sums for the arc a -> b with inward unit normal m (method/phong_edge.glsl), the
 // same quantities as the exact method's.
