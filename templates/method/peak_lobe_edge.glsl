@@ -32,13 +32,15 @@
 //   tail) and arcs in the far tail (under al_tail_bound). Specular relL2 before -> after,
 //   pearson, CPU mirror, public typical / horizon / glossy / degenerate: polygon 2.5e-3 /
 //   5.9e-4 / 3.2e-3 / 3.8e-3 -> 1.3e-4 / 8.5e-5 / 1.0e-4 / 2.3e-5, sphere degenerate 2.8e-2
-//   -> 6.5e-4 (docs/methods.md has every method and light). The core's bound, N s^2 at 1
-//   / 0.25 / 0.1: typical 1.3e-3 / 1.9e-4 / 1.3e-4, degenerate 3.5e-3 / 1.0e-3 / 2.3e-5
-//   (lorentz 1.4e-2 / 7.2e-3 / 3.6e-5); 0.1 taken. GPU cost (navi21): pearson 6 801 -> 6 869
-//   cycles a wave, the rule's branch already there for N < 32.
+//   -> 6.5e-4 (docs/methods.md has every method and light). Typical / degenerate with the
+//   rule on near arcs only beyond N s^2 = 1: 1.3e-3 / 3.5e-3; on near and reached far arcs
+//   beyond 0.25 and 0.1: 1.9e-4 / 1.0e-3 and 1.3e-4 / 2.3e-5 (lorentz degenerate 7.2e-3 and
+//   3.6e-5); 0.1 taken. GPU cost (navi21): pearson 6 801 -> 6 869 cycles a wave, the rule's
+//   branch already there for N < 32.
 // Domain: real N >= 1, any arc.
 #define AL_PEAK_RULE_BELOW AL_R(32.0)
 #define AL_PEAK_RULE_CORE AL_R(0.1)
+#define AL_PEAK_RULE_REACH AL_R(-4.6)  // log of x^(N+1) = 1e-2, to two digits
 
 // Per-arc sums for the arc a -> b with inward unit normal m (method/phong_edge.glsl), the
 // same quantities as the exact method's.
@@ -48,13 +50,14 @@ AlLobeEdge al_lobe_edge(rvec3 a, rvec3 b, rvec3 m, rvec3 r, rvec3 n, real N) {
     bool low = N < AL_PEAK_RULE_BELOW;
     AlEdgeFrame E = al_edge_frame(a, b, m, r, N, low ? AL_R(-6.9) : AL_PEAK_LOG_FAR);
     bool rim = N * E.s * E.s > AL_PEAK_RULE_CORE &&
-               (N + AL_R(1.0)) * al_arc_log_x_max(E) > AL_R(-4.6);
+               (N + AL_R(1.0)) * al_arc_log_x_max(E) > AL_PEAK_RULE_REACH;
     rvec3 t;
     if (low || rim) {
         t = al_lobe_rule(E, N);  // the exact method's forms
     } else {
         t = rvec3(al_peak_edge_terms(E, al_arc_shared(E), N, E.far_edge), AL_R(0.0));
     }
+    // log c as al_arc_shared forms it.
     if (!low) t.z = al_lobe_z(E, AL_R(0.5) * al_log1p(-min(E.s * E.s, AL_R(1.0))), N);
     return al_lobe_sums(E, t, n, m);
 #else
