@@ -89,6 +89,15 @@ real al_ltc_rho(real alpha) {
 #endif
 }
 
+// Its inverse, alpha of rho (ltc_alpha_of_rho in include/arealight/ltc_table.hpp), a macro so
+// that the axis's constant bounds fold: the GGX-only paths (table=fit's coordinate, the
+// alpha-scaled divisor) use both.
+#ifdef AL_DIST_BECKMANN
+#define AL_LTC_ALPHA_OF_RHO(rho) ((rho) * (rho) * (rho))
+#else
+#define AL_LTC_ALPHA_OF_RHO(rho) ((rho) * (rho))
+#endif
+
 // Texture coordinates of (rho, cos theta_v): texel centres are the fitted cells.
 vec2 al_ltc_uv(real param, real nv, real sin_v) {
     real rho = al_ltc_rho(al_ltc_alpha(param));
@@ -256,10 +265,12 @@ void al_lambert_clip_edge(rvec3 a, rvec3 b, real za, real zb, rvec3 q, rvec3 m, 
 // (that file's header) in place of bilinear filtering's.
 void al_ltc_fit_lookup(real param, real nv, real sin_v, AL_INOUT(rvec4) m,
                        AL_INOUT(rvec4) amp) {
+    // sqrt(alpha): al_ltc_rho for GGX, whose path this is, written out: through the call
+    // glslang emitted a different module, whose cost the reports do not carry.
     real u = clamp((sqrt(param) - AL_LTC_RHO_MIN) / (AL_LTC_RHO_MAX - AL_LTC_RHO_MIN),
                    AL_R(0.0), AL_R(1.0));
     real rho = AL_LTC_RHO_MIN + u * (AL_LTC_RHO_MAX - AL_LTC_RHO_MIN);
-    real alpha = rho * rho;
+    real alpha = AL_LTC_ALPHA_OF_RHO(rho);
     // w from the sine, as al_ltc_uv takes it; clamped to the last fitted row, 62/63.
     real w = nv > AL_R(0.0) ? sin_v * inversesqrt(AL_R(1.0) + nv)
                             : sqrt(clamp(AL_R(1.0) - nv, AL_R(0.0), AL_R(1.0)));
@@ -396,8 +407,8 @@ AlLtc al_ltc_lookup(AlCase c) {
         // interpolated exactly (specular relL2 at alpha = 0.002 9.7e-3 -> 2e-4, typical
         // set; the two-lobe tables' cells are not one shape: fit/ltc_fit.cpp). The alpha is
         // clamped as the coordinate u is.
-        real alpha = clamp(al_ltc_alpha(real(c.params.x)), AL_LTC_RHO_MIN * AL_LTC_RHO_MIN,
-                           AL_LTC_RHO_MAX * AL_LTC_RHO_MAX);
+        real alpha = clamp(al_ltc_alpha(real(c.params.x)), AL_LTC_ALPHA_OF_RHO(AL_LTC_RHO_MIN),
+                           AL_LTC_ALPHA_OF_RHO(AL_LTC_RHO_MAX));
         real inv = AL_R(1.0) / alpha;
         L.m.x *= inv;
         L.m.y *= inv;
