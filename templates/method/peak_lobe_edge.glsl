@@ -57,8 +57,7 @@ AlLobeEdge al_lobe_edge(rvec3 a, rvec3 b, rvec3 m, rvec3 r, rvec3 n, real N) {
     } else {
         t = rvec3(al_peak_edge_terms(E, al_arc_shared(E), N, E.far_edge), AL_R(0.0));
     }
-    // log c as al_arc_shared forms it.
-    if (!low) t.z = al_lobe_z(E, AL_R(0.5) * al_log1p(-min(E.s * E.s, AL_R(1.0))), N);
+    if (!low) t.z = al_lobe_z(E, al_arc_log_c(E), N);
     return al_lobe_sums(E, t, n, m);
 #else
     AlEdgeFrame E = al_edge_frame(a, b, m, r, N, AL_PEAK_LOG_FAR);

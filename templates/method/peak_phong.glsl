@@ -278,8 +278,8 @@ struct AlArcShared {
 };
 AlArcShared al_arc_shared(AlEdgeFrame E) {
     AlArcShared S;
-    S.s2 = min(E.s * E.s, AL_R(1.0));  // |r.m| may round above 1: keep log c a number
-    S.lc = AL_R(0.5) * al_log1p(-S.s2);
+    S.s2 = min(E.s * E.s, AL_R(1.0));
+    S.lc = al_arc_log_c(E);
     S.ta = al_atan2(E.ag, E.af);
     S.dtau = max(al_atan2(E.bg, E.bf) - S.ta, AL_R(0.0));
     S.tan1 = AL_R(0.0);

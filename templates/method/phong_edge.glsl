@@ -43,6 +43,12 @@ real al_arc_log_x_max(AlEdgeFrame E) {
     return al_log(max(x_max, AL_R(1e-30)));
 }
 
+// log c = log sqrt(1 - s^2) of the arc of E, with s^2 capped at 1 (|r.m| may round above 1:
+// log c stays a number).
+real al_arc_log_c(AlEdgeFrame E) {
+    return AL_R(0.5) * al_log1p(-min(E.s * E.s, AL_R(1.0)));
+}
+
 // Whether exponent N takes the far form on the arc of E, by the rule al_edge_frame's comment
 // states (log_x_max: al_arc_log_x_max).
 bool al_arc_far(AlEdgeFrame E, real log_x_max, real N, real log_far) {
